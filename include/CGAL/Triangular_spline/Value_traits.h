@@ -1,0 +1,106 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_VALUE_TRAITS_H
+#define CGAL_TRIANGULAR_SPLINE_VALUE_TRAITS_H
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Origin.h>
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <type_traits>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineConcepts
+  \brief describes the control values a patch may carry.
+
+  A control value is an element of a vector space over the number type `FT`: the
+  algorithms only form affine (and, for derivatives, linear) combinations `a + b`,
+  `a - b` and `FT * a`, so the Bézier core stays rational. Specialisations exist for
+
+  - the number type itself (functional patches, heights over the plane): dimension 1;
+  - `CGAL::Vector_2` and `CGAL::Vector_3` of any kernel (parametric patches; a point
+    \f$p\f$ is stored as the position vector \f$p - O\f$): dimensions 2 and 3.
+
+  Users add a value type by specialising this template with the members below.
+*/
+template <class Value, class Enable = void>
+struct Value_traits {
+  /// the number type the values are built from
+  using FT = Value;
+  /// the number of coordinates
+  static constexpr int dimension = 1;
+  /// returns the zero value (needed for derivatives, which are linear combinations)
+  static Value zero() { return Value(0); }
+  /// returns coordinate `c` of `v`
+  static const FT& coordinate(const Value& v, int) { return v; }
+};
+
+template <class Vector>
+struct Value_traits<Vector, std::enable_if_t<std::is_same<
+                                typename Kernel_traits<Vector>::Kernel::Vector_3, Vector>::value>> {
+  using FT = typename Kernel_traits<Vector>::Kernel::FT;
+  static constexpr int dimension = 3;
+  static Vector zero() { return Vector(NULL_VECTOR); }
+  static FT coordinate(const Vector& v, int c) { return v[c]; }
+};
+
+template <class Vector>
+struct Value_traits<Vector, std::enable_if_t<std::is_same<
+                                typename Kernel_traits<Vector>::Kernel::Vector_2, Vector>::value>> {
+  using FT = typename Kernel_traits<Vector>::Kernel::FT;
+  static constexpr int dimension = 2;
+  static Vector zero() { return Vector(NULL_VECTOR); }
+  static FT coordinate(const Vector& v, int c) { return v[c]; }
+};
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief returns the largest absolute coordinate of `v`, converted to `double`
+  (the norm used for residuals).
+*/
+template <class Value>
+double max_abs_coordinate(const Value& v) {
+  using Traits = Value_traits<Value>;
+  double result = 0;
+  for (int c = 0; c < Traits::dimension; ++c) {
+    const double x = std::abs(CGAL::to_double(Traits::coordinate(v, c)));
+    // NaN must not hide behind a max.
+    if (!(x <= result))
+      result = x;
+  }
+  return result;
+}
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief returns `true` iff every coordinate of `v` is zero (an exact test for exact
+  number types).
+*/
+template <class Value>
+bool is_zero_value(const Value& v) {
+  using Traits = Value_traits<Value>;
+  for (int c = 0; c < Traits::dimension; ++c)
+    if (!CGAL::is_zero(Traits::coordinate(v, c)))
+      return false;
+  return true;
+}
+
+/// returns `true` iff every coordinate of `v` is finite (always true for exact types).
+template <class Value>
+bool is_finite_value(const Value& v) {
+  using Traits = Value_traits<Value>;
+  for (int c = 0; c < Traits::dimension; ++c)
+    if (!CGAL::is_finite(Traits::coordinate(v, c)))
+      return false;
+  return true;
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_VALUE_TRAITS_H

@@ -1,0 +1,232 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_CONTINUITY_H
+#define CGAL_TRIANGULAR_SPLINE_CONTINUITY_H
+
+#include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/enum.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineContinuity
+  \brief which blossom conditions decide a \f$C^k\f$ join of two patches \f$F_A\f$ over
+  \f$(p,r,s)\f$ and \f$F_B\f$ over \f$(q,r,s)\f$ (shared edge \f$rs\f$).
+
+  All three sets are necessary and sufficient (Xu, Lemma 3.1.4); they differ in which
+  blossom values are compared, i.e. in what the residuals mean.
+*/
+enum class Join_conditions {
+  /// for each order \f$l \le k\f$ and \f$i+j = m-l\f$: \f$f_B(q^l r^i s^j) = f_A(q^l r^i s^j)\f$,
+  /// i.e. the control points of B next to the edge equal those of A's polynomial extended
+  /// over B's triangle. Order 0 is Xu's (3.4), order 1 is (3.5). \f$\sum_l (m-l+1)\f$
+  /// conditions, the minimal number.
+  Extension,
+  /// Lai's construction as rephrased by Mann (eqs. (1), (2)): the same count, but at order
+  /// \f$l\f$ the compared blossom values carry \f$\lceil l/2\rceil\f$ copies of \f$q\f$ and
+  /// \f$\lfloor l/2\rfloor\f$ of \f$p\f$, the balanced points the averaging adjustment uses.
+  Lai,
+  /// every multiset \f$p^g q^h r^i s^j\f$ with \f$i + j \ge m - k\f$ (Lemma 3.1.4 verbatim);
+  /// redundant, meant for cross-checking.
+  Complete
+};
+
+/*!
+  \ingroup PkgTriangularSplineContinuity
+  \brief one compared pair of blossom values \f$f_B(p^g q^h r^i s^j) - f_A(p^g q^h r^i s^j)\f$.
+*/
+struct Join_condition {
+  int order = 0;          ///< \f$g+h\f$: the number of arguments off the shared edge
+  int p_count = 0;        ///< \f$g\f$, copies of A's apex \f$p\f$
+  int q_count = 0;        ///< \f$h\f$, copies of B's apex \f$q\f$
+  int r_count = 0;        ///< \f$i\f$, copies of the first shared vertex \f$r\f$
+  int s_count = 0;        ///< \f$j\f$, copies of the second shared vertex \f$s\f$
+  double residual = 0;    ///< largest absolute coordinate of the difference (in `double`)
+  bool satisfied = false; ///< the difference is zero (exactly, or within the tolerance)
+};
+
+/*!
+  \ingroup PkgTriangularSplineContinuity
+  \brief the outcome of `check_join()`.
+*/
+struct Join_report {
+  int requested_order = 0; ///< the \f$k\f$ asked for
+  /// the largest \f$l \le k\f$ such that every condition of order \f$\le l\f$ is satisfied;
+  /// -1 if even \f$C^0\f$ fails
+  int achieved_order = -1;
+  bool holds = false;      ///< `achieved_order >= requested_order`
+  double max_residual = 0; ///< largest residual over all conditions checked
+  bool exact = false;      ///< the verdict was decided with an exact number type
+  /// local indices (0, 1, 2) in patch A of \f$p, r, s\f$ and in patch B of \f$q, r, s\f$
+  std::array<int, 3> a_vertices{{0, 1, 2}}, b_vertices{{0, 1, 2}};
+  std::vector<Join_condition> conditions; ///< every condition checked, by increasing order
+};
+
+namespace internal {
+
+// Finds the shared edge: returns {p, r, s} local indices in A and {q, r, s} in B, where
+// r and s are the same points in both. Exact point comparison and orientation decide.
+template <class GeomTraits, class Value>
+std::pair<std::array<int, 3>, std::array<int, 3>>
+shared_edge(const Bezier_triangle<GeomTraits, Value>& A,
+            const Bezier_triangle<GeomTraits, Value>& B) {
+  std::vector<std::pair<int, int>> common;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      if (A.vertex(a) == B.vertex(b))
+        common.emplace_back(a, b);
+  if (common.size() != 2)
+    throw Invalid_input("join test: the domain triangles share " + std::to_string(common.size()) +
+                        " vertices, adjacent triangles share exactly 2");
+  const int p = 3 - common[0].first - common[1].first;
+  const int q = 3 - common[0].second - common[1].second;
+  const auto orientation = A.geom_traits().orientation_2_object();
+  const auto& r = A.vertex(common[0].first);
+  const auto& s = A.vertex(common[1].first);
+  const CGAL::Orientation op = orientation(r, s, A.vertex(p));
+  const CGAL::Orientation oq = orientation(r, s, B.vertex(q));
+  if (op == oq)
+    throw Invalid_input("join test: the domain triangles overlap (both apexes " +
+                        point_to_string(A.vertex(p)) + " and " + point_to_string(B.vertex(q)) +
+                        " lie on the same side of the shared edge)");
+  return {{{p, common[0].first, common[1].first}}, {{q, common[0].second, common[1].second}}};
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineContinuity
+  \brief checks whether the patches `A` and `B` over adjacent domain triangles join with
+  \f$C^k\f$ continuity along their shared edge (Xu, Lemma 3.1.4; Lai/Mann eqs. (1), (2)).
+
+  The shared edge is found by exact comparison of the domain vertices, and the two apexes
+  must lie strictly on opposite sides of it (exact orientation test). Each condition
+  compares the blossoms of both patches at the same multiset of points, so with an exact
+  number type the verdict is exact; with `double`, a condition counts as satisfied when its
+  residual is at most `tolerance` (absolute, largest coordinate), and the residuals say by
+  how much the join misses.
+
+  \param k the continuity order, \f$0 \le k \le m\f$
+  \param conditions which equivalent set of conditions to evaluate
+  \param tolerance absolute tolerance for inexact number types; ignored (0) for exact ones
+  \throws Invalid_input if the degrees differ, `k` is out of range, or the triangles are
+  not adjacent across one edge.
+*/
+template <class GeomTraits, class Value>
+Join_report
+check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<GeomTraits, Value>& B,
+           int k, Join_conditions conditions = Join_conditions::Extension, double tolerance = 0) {
+  using FT = typename GeomTraits::FT;
+  using Weights = typename Bezier_triangle<GeomTraits, Value>::Weights;
+  const int m = A.degree();
+  if (B.degree() != m)
+    throw Invalid_input("join test: degree mismatch (" + std::to_string(m) + " and " +
+                        std::to_string(B.degree()) + ")");
+  if (k < 0 || k > m)
+    throw Invalid_input("join test: continuity order " + std::to_string(k) + " outside 0.." +
+                        std::to_string(m));
+  constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
+  if (exact)
+    tolerance = 0;
+
+  Join_report report;
+  report.requested_order = k;
+  report.exact = exact;
+  std::tie(report.a_vertices, report.b_vertices) = internal::shared_edge(A, B);
+  const auto& p = A.vertex(report.a_vertices[0]);
+  const auto& q = B.vertex(report.b_vertices[0]);
+  const auto& r = A.vertex(report.a_vertices[1]);
+  const auto& s = A.vertex(report.a_vertices[2]);
+  // Barycentric weights of p, q, r, s in each patch's own frame, computed once.
+  const std::array<Weights, 4> wa{{A.barycentric_coordinates(p), A.barycentric_coordinates(q),
+                                   A.barycentric_coordinates(r), A.barycentric_coordinates(s)}};
+  const std::array<Weights, 4> wb{{B.barycentric_coordinates(p), B.barycentric_coordinates(q),
+                                   B.barycentric_coordinates(r), B.barycentric_coordinates(s)}};
+
+  auto evaluate = [&](int g, int h, int i) {
+    Join_condition c;
+    c.order = g + h;
+    c.p_count = g;
+    c.q_count = h;
+    c.r_count = i;
+    c.s_count = m - g - h - i;
+    const std::array<int, 4> counts{{g, h, c.r_count, c.s_count}};
+    std::vector<Weights> args_a, args_b;
+    for (int point = 0; point < 4; ++point)
+      for (int n = 0; n < counts[point]; ++n) {
+        args_a.push_back(wa[point]);
+        args_b.push_back(wb[point]);
+      }
+    const Value difference = B.blossom_barycentric(args_b) - A.blossom_barycentric(args_a);
+    c.residual = max_abs_coordinate(difference);
+    c.satisfied = exact ? is_zero_value(difference) : (c.residual <= tolerance);
+    return c;
+  };
+
+  for (int l = 0; l <= k; ++l) {
+    for (int i = 0; i <= m - l; ++i) {
+      switch (conditions) {
+      case Join_conditions::Extension:
+        report.conditions.push_back(evaluate(0, l, i));
+        break;
+      case Join_conditions::Lai:
+        report.conditions.push_back(evaluate(l / 2, l - l / 2, i));
+        break;
+      case Join_conditions::Complete:
+        for (int g = 0; g <= l; ++g)
+          report.conditions.push_back(evaluate(g, l - g, i));
+        break;
+      }
+    }
+  }
+
+  report.achieved_order = k;
+  for (const Join_condition& c : report.conditions) {
+    if (!(c.residual <= report.max_residual))
+      report.max_residual = c.residual;
+    if (!c.satisfied && c.order - 1 < report.achieved_order)
+      report.achieved_order = c.order - 1;
+  }
+  report.holds = report.achieved_order >= k;
+  return report;
+}
+
+/*!
+  \ingroup PkgTriangularSplineContinuity
+  \brief returns `true` iff `A` and `B` join with \f$C^k\f$ continuity: an exact verdict.
+  \tparam GeomTraits a kernel with an exact number type (e.g.
+  `CGAL::Simple_cartesian<CGAL::Exact_rational>`); with `double`, use `check_join()` and
+  read the residuals, or convert the patches exactly with `convert_patch()` first.
+*/
+template <class GeomTraits, class Value>
+bool is_Ck_join(const Bezier_triangle<GeomTraits, Value>& A,
+                const Bezier_triangle<GeomTraits, Value>& B, int k) {
+  static_assert(CGAL::Algebraic_structure_traits<typename GeomTraits::FT>::Is_exact::value,
+                "is_Ck_join() needs an exact number type; use check_join() for residuals");
+  return check_join(A, B, k).holds;
+}
+
+/*!
+  \ingroup PkgTriangularSplineContinuity
+  \brief returns the largest residual of the \f$C^k\f$ conditions between `A` and `B`
+  (absolute, largest coordinate; zero iff they join \f$C^k\f$ up to the arithmetic).
+*/
+template <class GeomTraits, class Value>
+double join_residual(const Bezier_triangle<GeomTraits, Value>& A,
+                     const Bezier_triangle<GeomTraits, Value>& B, int k) {
+  return check_join(A, B, k).max_residual;
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_CONTINUITY_H

@@ -1,0 +1,138 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_DIFFERENTIAL_GEOMETRY_H
+#define CGAL_TRIANGULAR_SPLINE_DIFFERENTIAL_GEOMETRY_H
+
+#include <CGAL/Triangular_spline/Bezier_triangle.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief the first and second partial derivatives of a patch at a point, as 3D vectors in
+  `double`.
+
+  For a functional patch \f$z = F(x,y)\f$ the surface is the graph \f$(x, y, F(x,y))\f$; for a
+  parametric patch it is \f$F\f$ itself. The derivatives come from the exact blossom and are
+  converted to `double` only at the end.
+*/
+struct Surface_derivatives {
+  std::array<double, 3> fx, fy, fxx, fxy,
+      fyy; ///< \f$\partial_x, \partial_y, \partial_{xx}, \partial_{xy}, \partial_{yy}\f$
+};
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief the differential-geometric quantities at a point: unit normal (oriented by
+  \f$F_x \times F_y\f$, i.e. upward for a functional patch), Gaussian curvature \f$K\f$
+  and mean curvature \f$H = (\kappa_1+\kappa_2)/2\f$ with respect to that normal.
+*/
+struct Surface_curvature {
+  std::array<double, 3> normal; ///< unit normal; all zero where the surface is singular
+  double gaussian = 0;          ///< \f$K = (LN - M^2)/(EG - F^2)\f$
+  double mean = 0;              ///< \f$H = (EN - 2FM + GL)/(2(EG - F^2))\f$
+  bool regular = true;          ///< `false` where \f$F_x \times F_y = 0\f$ (values are NaN)
+};
+
+namespace internal {
+
+template <class Value>
+std::array<double, 3> as_3d(const Value& v, bool is_graph_value, double graph_x, double graph_y) {
+  using Traits = Value_traits<Value>;
+  if (is_graph_value)
+    return {{graph_x, graph_y, CGAL::to_double(Traits::coordinate(v, 0))}};
+  std::array<double, 3> r{{0, 0, 0}};
+  for (int c = 0; c < Traits::dimension && c < 3; ++c)
+    r[static_cast<std::size_t>(c)] = CGAL::to_double(Traits::coordinate(v, c));
+  return r;
+}
+
+inline std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+
+inline double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief returns the first and second derivatives of the surface of `patch` at `a`.
+  \tparam Value a scalar (graph surface) or a 3D vector type
+*/
+template <class GeomTraits, class Value>
+Surface_derivatives surface_derivatives(const Bezier_triangle<GeomTraits, Value>& patch,
+                                        const typename GeomTraits::Point_2& a) {
+  constexpr int dimension = Value_traits<Value>::dimension;
+  static_assert(dimension == 1 || dimension == 3,
+                "normals and curvatures need functional or 3D parametric patches");
+  constexpr bool graph = (dimension == 1);
+  Surface_derivatives d;
+  d.fx = internal::as_3d(patch.partial_derivative(a, 1, 0), graph, 1, 0);
+  d.fy = internal::as_3d(patch.partial_derivative(a, 0, 1), graph, 0, 1);
+  d.fxx = internal::as_3d(patch.partial_derivative(a, 2, 0), graph, 0, 0);
+  d.fxy = internal::as_3d(patch.partial_derivative(a, 1, 1), graph, 0, 0);
+  d.fyy = internal::as_3d(patch.partial_derivative(a, 0, 2), graph, 0, 0);
+  return d;
+}
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief returns the unit normal, Gaussian and mean curvature of the surface of `patch` at
+  `a`, from the exact first and second derivatives (square roots are taken in `double`).
+*/
+template <class GeomTraits, class Value>
+Surface_curvature surface_curvature(const Bezier_triangle<GeomTraits, Value>& patch,
+                                    const typename GeomTraits::Point_2& a) {
+  const Surface_derivatives d = surface_derivatives(patch, a);
+  Surface_curvature result;
+  const std::array<double, 3> n = internal::cross(d.fx, d.fy);
+  const double length = std::sqrt(internal::dot(n, n));
+  if (!(length > 0)) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    result.normal = {{0, 0, 0}};
+    result.gaussian = result.mean = nan;
+    result.regular = false;
+    return result;
+  }
+  result.normal = {{n[0] / length, n[1] / length, n[2] / length}};
+  const double E = internal::dot(d.fx, d.fx), F = internal::dot(d.fx, d.fy),
+               G = internal::dot(d.fy, d.fy);
+  const double L = internal::dot(d.fxx, result.normal), M = internal::dot(d.fxy, result.normal),
+               N = internal::dot(d.fyy, result.normal);
+  const double first = E * G - F * F;
+  result.gaussian = (L * N - M * M) / first;
+  result.mean = (E * N - 2 * F * M + G * L) / (2 * first);
+  return result;
+}
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief returns the unit normal of the surface of `patch` at `a` (see `surface_curvature()`),
+  zero where the surface is singular.
+*/
+template <class GeomTraits, class Value>
+std::array<double, 3> surface_normal(const Bezier_triangle<GeomTraits, Value>& patch,
+                                     const typename GeomTraits::Point_2& a) {
+  constexpr bool graph = (Value_traits<Value>::dimension == 1);
+  const std::array<double, 3> n =
+      internal::cross(internal::as_3d(patch.partial_derivative(a, 1, 0), graph, 1, 0),
+                      internal::as_3d(patch.partial_derivative(a, 0, 1), graph, 0, 1));
+  const double length = std::sqrt(internal::dot(n, n));
+  if (!(length > 0))
+    return {{0, 0, 0}};
+  return {{n[0] / length, n[1] / length, n[2] / length}};
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_DIFFERENTIAL_GEOMETRY_H

@@ -1,0 +1,123 @@
+// tspline: command-line tool of the Triangular_spline package.
+// A thin layer: this file dispatches to one function per subcommand.
+
+#include "cli.h"
+#include "commands.h"
+
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#ifndef TRIANGULAR_SPLINE_VERSION
+#error                                                                                             \
+    "TRIANGULAR_SPLINE_VERSION must be defined (it comes with the CGAL::Triangular_spline target)"
+#endif
+
+namespace {
+
+struct Command {
+  std::string_view name;
+  std::string_view summary;
+  int (*run)(const std::vector<std::string>& args);
+};
+
+const Command commands[] = {
+    {"demo", "run the main job on an embedded data set (no input needed)", tspline::run_demo},
+    {"c1", "C^1 quintic spline (Xu) from scattered data or a triangulated height field",
+     tspline::run_c1},
+    {"certify", "certify the C^1 continuity of a saved spline exactly", tspline::run_certify},
+    {"pseudo-ag1", "pseudo-AG^1 surface (Xu) over a closed triangle mesh", tspline::run_pseudo_ag1},
+    {"adjust", "adjust control points to C^k continuity (Mann)", tspline::run_adjust},
+    {"mann", "C^1 interpolant with polynomial precision (Mann)", tspline::run_mann},
+    {"blend", "generalized blending mesh interpolation (Fang)", tspline::run_blend},
+    {"render", "PNG pictures and coloured meshes of a surface", tspline::run_render},
+};
+
+const Command* find_command(std::string_view name) {
+  for (const Command& command : commands)
+    if (command.name == name)
+      return &command;
+  return nullptr;
+}
+
+void print_usage(std::ostream& out) {
+  out << "usage: tspline <command> [options] [arguments]\n"
+         "       tspline --help | --version\n"
+         "\n"
+         "Triangular Bezier spline surfaces (Triangular_spline " TRIANGULAR_SPLINE_VERSION ").\n"
+         "\n"
+         "commands:\n";
+  std::size_t width = 0;
+  for (const Command& command : commands)
+    width = std::max(width, command.name.size());
+  for (const Command& command : commands)
+    out << "  " << command.name << std::string(width - command.name.size() + 2, ' ')
+        << command.summary << '\n';
+  out << "\nRun 'tspline <command> --help' for the options of a command.\n";
+}
+
+// Exception messages may span several lines (CGAL's do); print them on one.
+std::string one_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r'))
+    text.pop_back();
+  std::string result;
+  for (const char c : text) {
+    if (c == '\n')
+      result += "; ";
+    else if (c != '\r')
+      result += c;
+  }
+  return result;
+}
+
+} // namespace
+
+std::string_view tspline::command_summary(std::string_view name) {
+  const Command* command = find_command(name);
+  return command == nullptr ? std::string_view() : command->summary;
+}
+
+int main(int argc, char* argv[]) {
+  if (argc < 2) {
+    print_usage(std::cerr);
+    return 2;
+  }
+  const std::string first = argv[1];
+  if (first == "--help" || first == "-h") {
+    print_usage(std::cout);
+    return 0;
+  }
+  if (first == "--version") {
+    std::cout << "tspline " TRIANGULAR_SPLINE_VERSION "\n";
+    return 0;
+  }
+  if (!first.empty() && first[0] == '-') {
+    std::cerr << "tspline: unknown option '" << first << "' (see 'tspline --help')\n";
+    return 2;
+  }
+  const Command* command = find_command(first);
+  if (command == nullptr) {
+    std::cerr << "tspline: unknown command '" << first << "' (see 'tspline --help')\n";
+    return 2;
+  }
+
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  const std::string prefix = "tspline " + std::string(command->name) + ": ";
+  try {
+    return command->run(args);
+  } catch (const tspline::Usage_error& e) {
+    std::cerr << prefix << one_line(e.what()) << " (see 'tspline " << command->name
+              << " --help')\n";
+    return 2;
+  } catch (const std::exception& e) {
+    // std::invalid_argument, std::runtime_error, CGAL::Failure_exception, ...
+    std::cerr << prefix << "error: " << one_line(e.what()) << '\n';
+    return 1;
+  } catch (...) {
+    std::cerr << prefix << "error: unknown exception\n";
+    return 1;
+  }
+}
