@@ -1,0 +1,681 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_C1_QUINTIC_SPLINE_H
+#define CGAL_TRIANGULAR_SPLINE_C1_QUINTIC_SPLINE_H
+
+#include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/Multi_index.h>
+#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/degenerate_frames.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/Exact_rational.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <type_traits>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+namespace internal {
+
+// The storage layout of a quintic spline's control points, shared by the spline and by the
+// independent dimension count: vertices, then 4 slots per edge, then 6 per face.
+template <class Domain>
+std::uint32_t quintic_vertex_slot(const Domain&, typename Domain::Index v) {
+  return static_cast<std::uint32_t>(v);
+}
+template <class Domain>
+std::uint32_t quintic_edge_slot(const Domain& d, typename Domain::Index e, int t) {
+  return static_cast<std::uint32_t>(d.number_of_vertices() + 4 * std::size_t(e) + std::size_t(t));
+}
+template <class Domain>
+std::uint32_t quintic_face_slot(const Domain& d, typename Domain::Index f, int t) {
+  return static_cast<std::uint32_t>(d.number_of_vertices() + 4 * d.number_of_edges() +
+                                    6 * std::size_t(f) + std::size_t(t));
+}
+template <class Domain>
+std::uint32_t quintic_slot(const Domain& d, typename Domain::Index f, const Multi_index& index) {
+  const auto& t = d.face(f);
+  for (int v = 0; v < 3; ++v)
+    if (index[v] == 5)
+      return quintic_vertex_slot(d, t[std::size_t(v)]);
+  for (int v = 0; v < 3; ++v)
+    if (index[v] == 0) {
+      // on the edge opposite v: slot 4 - (copies of the edge's smaller vertex)
+      const auto e = d.face_edge(f, v);
+      const auto lo = d.edge(e)[0];
+      int lo_count = 0;
+      for (int w = 0; w < 3; ++w)
+        if (t[std::size_t(w)] == lo)
+          lo_count = index[w];
+      return quintic_edge_slot(d, e, 4 - lo_count);
+    }
+  for (int v = 0; v < 3; ++v)
+    if (index[v] == 3)
+      return quintic_face_slot(d, f, v);
+  for (int v = 0; v < 3; ++v)
+    if (index[v] == 1)
+      return quintic_face_slot(d, f, 3 + v);
+  CGAL_error_msg("not a quintic multi-index");
+  return 0;
+}
+
+// Barycentric coordinates of x with respect to (a, b, c), which the exact predicates have
+// found non-collinear. With an inexact number type a nearly collinear frame can round its
+// determinant to zero (or to the wrong size): below the error bound the weights are
+// recomputed with exact rationals and rounded once, so they are never infinite and always
+// accurate to the last bit.
+template <class Point_2>
+auto barycentric_weights(const Point_2& x, const Point_2& a, const Point_2& b, const Point_2& c) {
+  using FT = std::decay_t<decltype(x.x())>;
+  auto compute = [](const auto& x, const auto& a, const auto& b, const auto& c) {
+    using T = std::decay_t<decltype(x[0])>;
+    const T d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    const T mu = ((x[0] - a[0]) * (c[1] - a[1]) - (x[1] - a[1]) * (c[0] - a[0])) / d;
+    const T nu = ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / d;
+    const T lambda = T(1) - mu - nu;
+    return std::array<T, 3>{{lambda, mu, nu}};
+  };
+  auto coords = [](const Point_2& p) { return std::array<FT, 2>{{p.x(), p.y()}}; };
+  if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
+    return compute(coords(x), coords(a), coords(b), coords(c));
+  } else {
+    const double bx = CGAL::to_double(b.x() - a.x()), by = CGAL::to_double(b.y() - a.y());
+    const double cx = CGAL::to_double(c.x() - a.x()), cy = CGAL::to_double(c.y() - a.y());
+    const double d = bx * cy - by * cx;
+    const double scale =
+        (std::max)(std::abs(bx), std::abs(by)) * (std::max)(std::abs(cx), std::abs(cy));
+    if (std::abs(d) > 1e-10 * scale)
+      return compute(coords(x), coords(a), coords(b), coords(c));
+    using Q = CGAL::Exact_rational;
+    auto exact = [](const Point_2& p) {
+      return std::array<Q, 2>{{Q(CGAL::to_double(p.x())), Q(CGAL::to_double(p.y()))}};
+    };
+    const std::array<Q, 3> w = compute(exact(x), exact(a), exact(b), exact(c));
+    return std::array<FT, 3>{
+        {FT(CGAL::to_double(w[0])), FT(CGAL::to_double(w[1])), FT(CGAL::to_double(w[2]))}};
+  }
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief which three points of a corner region (the corner point and its star, Xu §4.1.2)
+  are prescribed.
+*/
+enum class Corner_frame {
+  /// three star points spread evenly around the vertex (Xu Fig. 4.1): the corner point
+  /// itself is propagated, so the spline approximates the vertex data
+  Symmetric_stars,
+  /// the corner point and the two star points whose directions are closest to orthogonal:
+  /// the corner can be forced through a data value (interpolation, Xu §4.4.2)
+  Corner_and_two_stars
+};
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief the role of a control-point slot (SPEC §3): each control point of the spline is
+  stored once, in the slot of the vertex, edge or face it belongs to.
+*/
+enum class Slot_kind {
+  Corner,       ///< \f$f(v^5)\f$, one per vertex
+  Star,         ///< \f$f(v^4 w)\f$, two per edge
+  Edge_middle,  ///< \f$f(v^3 w^2)\f$, two per edge
+  Corner_inner, ///< \f$f(a^3 b c)\f$, three per face
+  Middle_inner  ///< \f$f(a b^2 c^2)\f$ (the flip points of interior edges), three per face
+};
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief Xu's C^1 quintic spline over a planar triangulation (Xu ch. 3, 4, 7), built by
+  prescribing a minimal determining set of control points and propagating the others.
+
+  <b>Storage.</b> Control points shared by patches are stored once: one slot per vertex
+  (corner), four per edge (star, edge-middle, edge-middle, star, from the edge's smaller
+  vertex index to the larger), six per face (three corner-inner, three middle-inner),
+  about 12.5 values per face. The patch of a face is a view over its 21 slots (`patch()`),
+  so C^0 continuity holds by construction.
+
+  <b>Plan.</b> The prescription is data: every slot is either free or computed by a
+  `Rule`, an affine combination of two or three earlier slots with coefficients that are
+  barycentric coordinates of domain points (ratios of 2x2 determinants, Xu §4.2). Rules
+  are stored in evaluation order: corner regions (Lemma 3.3.2), corner-inner constraints
+  at degenerate frames, edge-middle points from both ends of each edge (condition 3.5
+  solved for the edge point), edge-middle points of re-routed ends, and finally the
+  second flip point of every interior edge. The free slots are, per vertex, three
+  non-collinear points of its corner region; per face its three corner-inner points; per
+  interior edge one flip point; per boundary edge its two edge-middle points and the
+  middle-inner point next to it.
+
+  <b>Degenerate frames</b> (Xu §4.4.4) are detected with exact predicates and re-routed:
+  the edge-middle point next to a degenerate end is solved from the middle diamond (both
+  flip points free), and the diamond at the degenerate end becomes a constraint fixing one
+  corner-inner point from its neighbour. Around a singular vertex the four constraints form
+  a cycle of which one is implied: one corner-inner point stays free, which is the extra
+  dimension \f$\sigma\f$. No rule ever divides by zero; the free count is
+  \f$3V + 3F + E_I + 3E_B + \sigma\f$.
+
+  Domain points are those of `GeomTraits`; all geometric decisions use its exact
+  predicates. With an exact number type every coefficient and every control point is
+  exact.
+
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (heights over the plane) or `GeomTraits::Vector_3`
+  (parametric surfaces)
+*/
+template <class GeomTraits, class Value = typename GeomTraits::FT>
+class C1_quintic_spline {
+public:
+  /// \name Types
+  /// @{
+  using Geom_traits = GeomTraits;
+  using FT = typename Geom_traits::FT;
+  using Point_2 = typename Geom_traits::Point_2;
+  using Domain = Planar_domain<Geom_traits>;
+  using Index = typename Domain::Index;
+  /// index of a control-point slot
+  using Slot = std::uint32_t;
+  using Patch = Bezier_triangle<Geom_traits, Value>;
+  using Degenerate_frame = Degenerate_frame_t<Index>;
+  static constexpr Slot null_slot = (std::numeric_limits<Slot>::max)();
+
+  /// how a dependent slot is computed: `value(target) = sum weights[i] * value(sources[i])`
+  /// over the first `size` sources (the weights sum to one)
+  struct Rule {
+    Slot target;
+    int size;
+    std::array<Slot, 3> sources;
+    std::array<FT, 3> weights;
+  };
+  /// @}
+
+  /// \name Creation
+  /// @{
+
+  /*!
+    builds the plan of the spline over `domain`; all control values start at zero.
+    \param frame which points of each corner region are prescribed
+  */
+  explicit C1_quintic_spline(Domain domain, Corner_frame frame = Corner_frame::Symmetric_stars)
+      : m_domain(std::move(domain)), m_frame(frame) {
+    const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges(),
+                      F = m_domain.number_of_faces();
+    if (V + 4 * E + 6 * F >= null_slot)
+      throw Invalid_input("spline: domain too large for 32-bit slot indices");
+    m_values.assign(V + 4 * E + 6 * F, zero());
+    m_free.assign(m_values.size(), 0);
+    build_plan();
+  }
+  /// @}
+
+  /// \name Slots
+  /// @{
+  const Domain& domain() const { return m_domain; }
+  Corner_frame corner_frame() const { return m_frame; }
+  std::size_t number_of_slots() const { return m_values.size(); }
+  /// the corner slot of vertex `v`
+  Slot vertex_slot(Index v) const { return internal::quintic_vertex_slot(m_domain, v); }
+  /// slot `t` (0..3) of edge `e` = (lo, hi): \f$f(lo^{4-t} hi^{1+t})\f$
+  Slot edge_slot(Index e, int t) const { return internal::quintic_edge_slot(m_domain, e, t); }
+  /// slot `t` (0..5) of face `f` = (a, b, c): t < 3 the corner-inner point at vertex t,
+  /// t >= 3 the middle-inner point next to the edge opposite vertex t-3
+  Slot face_slot(Index f, int t) const { return internal::quintic_face_slot(m_domain, f, t); }
+
+  /// returns the slot holding \f$b_{i,j,k}\f$ of the patch of face `f` over
+  /// (`face(f)[0]`, `face(f)[1]`, `face(f)[2]`)
+  Slot slot(Index f, const Multi_index& index) const {
+    return internal::quintic_slot(m_domain, f, index);
+  }
+
+  /// returns the role of slot `s`
+  Slot_kind kind(Slot s) const {
+    const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
+    if (s < V)
+      return Slot_kind::Corner;
+    if (s < V + 4 * E) {
+      const std::size_t t = (s - V) % 4;
+      return (t == 0 || t == 3) ? Slot_kind::Star : Slot_kind::Edge_middle;
+    }
+    return (s - V - 4 * E) % 6 < 3 ? Slot_kind::Corner_inner : Slot_kind::Middle_inner;
+  }
+
+  /// returns the polar label of slot `s`: the domain vertices and multiplicities
+  /// (summing to 5) of the blossom argument \f$f(u^a v^b w^c)\f$ whose value it holds
+  std::vector<std::pair<Index, int>> polar_label(Slot s) const {
+    const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
+    if (s < V)
+      return {{static_cast<Index>(s), 5}};
+    if (s < V + 4 * E) {
+      const std::size_t e = (s - V) / 4;
+      const int t = static_cast<int>((s - V) % 4);
+      const auto& ends = m_domain.edge(static_cast<Index>(e));
+      return {{ends[0], 4 - t}, {ends[1], 1 + t}};
+    }
+    const std::size_t f = (s - V - 4 * E) / 6;
+    const int t = static_cast<int>((s - V - 4 * E) % 6);
+    const auto& v = m_domain.face(static_cast<Index>(f));
+    if (t < 3)
+      return {{v[std::size_t(t)], 3},
+              {v[std::size_t((t + 1) % 3)], 1},
+              {v[std::size_t((t + 2) % 3)], 1}};
+    const int u = t - 3;
+    return {
+        {v[std::size_t(u)], 1}, {v[std::size_t((u + 1) % 3)], 2}, {v[std::size_t((u + 2) % 3)], 2}};
+  }
+
+  /// returns the domain point of slot `s` (its polar label averaged): where the control
+  /// point sits over the plane in a picture of the control net
+  Point_2 domain_point(Slot s) const {
+    FT x(0), y(0);
+    for (const auto& [v, m] : polar_label(s)) {
+      x = x + FT(m) * m_domain.point(v).x();
+      y = y + FT(m) * m_domain.point(v).y();
+    }
+    return Point_2(x / FT(5), y / FT(5));
+  }
+  /// @}
+
+  /// \name Plan
+  /// @{
+  bool is_free(Slot s) const { return m_free[s] != 0; }
+  /// returns the free slots in increasing order
+  const std::vector<Slot>& free_slots() const { return m_free_slots; }
+  std::size_t number_of_free_parameters() const { return m_free_slots.size(); }
+  /// returns the rules in evaluation order
+  const std::vector<Rule>& rules() const { return m_rules; }
+  /// returns the degenerate frames found in the domain (re-routed in the plan)
+  const std::vector<Degenerate_frame>& degenerate_frames() const { return m_degenerate.frames; }
+  /// returns the interior singular vertices (each adds one free parameter)
+  const std::vector<Index>& singular_vertices() const { return m_degenerate.singular_vertices; }
+  /// @}
+
+  /// \name Control values
+  /// @{
+  const Value& value(Slot s) const { return m_values[s]; }
+  const std::vector<Value>& values() const { return m_values; }
+
+  /// sets the free slot `s` without propagating (use `propagate()` after a batch).
+  /// \throws Invalid_input if `s` is not free or `v` is not finite
+  void set_free_value(Slot s, const Value& v) {
+    check_free(s, v);
+    m_values[s] = v;
+  }
+
+  /// computes every dependent slot from the free ones, in plan order.
+  void propagate() {
+    for (const Rule& r : m_rules)
+      apply(r);
+  }
+
+  /*!
+    sets the free slot `s` to `v` and re-propagates only what depends on it (Xu §4.3:
+    corner regions, then edge halves, then flip points, following the plan order).
+    \return the slots whose value was recomputed, `s` first
+  */
+  std::vector<Slot> edit(Slot s, const Value& v) {
+    return edit(std::vector<std::pair<Slot, Value>>{{s, v}});
+  }
+
+  /// sets several free slots and re-propagates what depends on any of them, each
+  /// dependent slot once, in plan order (corners, edges, flips); returns the edited and
+  /// recomputed slots.
+  std::vector<Slot> edit(const std::vector<std::pair<Slot, Value>>& changes) {
+    std::vector<Slot> changed;
+    std::vector<std::size_t> heap; // rule positions, smallest first
+    auto enqueue_dependents = [&](Slot x) {
+      for (std::size_t i = m_dependent_offsets[x]; i < m_dependent_offsets[x + 1]; ++i) {
+        const std::size_t r = m_dependents[i];
+        if (!m_queued[r]) {
+          m_queued[r] = 1;
+          heap.push_back(r);
+          std::push_heap(heap.begin(), heap.end(), std::greater<std::size_t>());
+        }
+      }
+    };
+    for (const auto& [s, v] : changes) {
+      check_free(s, v);
+      m_values[s] = v;
+      changed.push_back(s);
+      enqueue_dependents(s);
+    }
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end(), std::greater<std::size_t>());
+      const std::size_t r = heap.back();
+      heap.pop_back();
+      m_queued[r] = 0;
+      apply(m_rules[r]);
+      changed.push_back(m_rules[r].target);
+      enqueue_dependents(m_rules[r].target);
+    }
+    return changed;
+  }
+
+  /// returns the quintic patch of face `f` over (`face(f)[0]`, `face(f)[1]`, `face(f)[2]`).
+  Patch patch(Index f) const {
+    std::vector<Value> net;
+    net.reserve(21);
+    for (const Multi_index& index : multi_indices(5))
+      net.push_back(m_values[slot(f, index)]);
+    const auto& t = m_domain.face(f);
+    return Patch(5, m_domain.point(t[0]), m_domain.point(t[1]), m_domain.point(t[2]),
+                 std::move(net), m_domain.geom_traits());
+  }
+  /// @}
+
+private:
+  static Value zero() { return Value_traits<Value>::zero(); }
+
+  void check_free(Slot s, const Value& v) const {
+    if (s >= m_values.size())
+      throw Invalid_input("spline: slot " + std::to_string(s) + " does not exist");
+    if (!m_free[s])
+      throw Invalid_input("spline: slot " + std::to_string(s) +
+                          " is propagated, not prescribed; only free control points can be set");
+    if (!is_finite_value(v))
+      throw Invalid_input("spline: non-finite control value for slot " + std::to_string(s));
+  }
+
+  void apply(const Rule& r) {
+    Value v = r.weights[0] * m_values[r.sources[0]] + r.weights[1] * m_values[r.sources[1]];
+    if (r.size == 3)
+      v = v + r.weights[2] * m_values[r.sources[2]];
+    m_values[r.target] = std::move(v);
+  }
+
+  std::array<FT, 3> barycentric(const Point_2& x, const Point_2& a, const Point_2& b,
+                                const Point_2& c) const {
+    return internal::barycentric_weights(x, a, b, c);
+  }
+
+  void add_rule(Slot target, std::array<Slot, 3> sources, std::array<FT, 3> weights, int size = 3) {
+    m_rules.push_back(Rule{target, size, sources, weights});
+  }
+
+  // The star slot of vertex v on edge e (v must be an end of e).
+  Slot star_slot(Index e, Index v) const {
+    return m_domain.edge(e)[0] == v ? edge_slot(e, 0) : edge_slot(e, 3);
+  }
+  Slot edge_middle_slot(Index e, Index near) const {
+    return m_domain.edge(e)[0] == near ? edge_slot(e, 1) : edge_slot(e, 2);
+  }
+  int position_in_face(Index f, Index v) const {
+    const auto& t = m_domain.face(f);
+    return t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+  }
+  Slot corner_inner_slot(Index f, Index v) const { return face_slot(f, position_in_face(f, v)); }
+  Slot flip_slot(Index f, Index e) const {
+    for (int i = 0; i < 3; ++i)
+      if (m_domain.face_edge(f, i) == e)
+        return face_slot(f, 3 + i);
+    return null_slot;
+  }
+
+  // The three prescribed points of v's corner region, as positions in the region list
+  // (0 = the corner, 1 + i = the star towards neighbour i). Exact non-collinearity is
+  // required; among valid frames, well-shaped ones are preferred: the propagated points are
+  // extrapolated from the frame, and a thin frame amplifies data noise and round-off.
+  std::array<std::size_t, 3> choose_frame(Index v) const {
+    const auto [nb, ne] = m_domain.neighbours(v);
+    const std::size_t d = static_cast<std::size_t>(ne - nb);
+    auto collinear = m_domain.geom_traits().collinear_2_object();
+    auto point_of = [&](std::size_t k) -> const Point_2& {
+      return k == 0 ? m_domain.point(v) : m_domain.point(nb[k - 1]);
+    };
+    // Smallest |sine| of the three angles of the frame triangle (0 if exactly collinear).
+    auto quality = [&](const std::array<std::size_t, 3>& f) {
+      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] ||
+          collinear(point_of(f[0]), point_of(f[1]), point_of(f[2])))
+        return 0.0;
+      double worst = 1;
+      for (int i = 0; i < 3; ++i) {
+        const Point_2& a = point_of(f[std::size_t(i)]);
+        const Point_2& b = point_of(f[std::size_t((i + 1) % 3)]);
+        const Point_2& c = point_of(f[std::size_t((i + 2) % 3)]);
+        const double ux = CGAL::to_double(b.x() - a.x()), uy = CGAL::to_double(b.y() - a.y());
+        const double wx = CGAL::to_double(c.x() - a.x()), wy = CGAL::to_double(c.y() - a.y());
+        const double sine =
+            std::abs(ux * wy - uy * wx) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
+        worst = (std::min)(worst, sine);
+      }
+      // Exactly non-collinear but degenerate in double: still valid, ranked last.
+      return (std::max)(worst, 1e-300);
+    };
+    if (d == 2) // an ear: the whole region is free
+      return {{0, 1, 2}};
+    // Good enough for a symmetric frame: no angle below about 6 degrees.
+    const double acceptable = 0.1;
+    std::array<std::size_t, 3> best{{0, 0, 0}};
+    double best_quality = 0;
+    auto consider = [&](const std::array<std::size_t, 3>& f) {
+      const double q = quality(f);
+      if (q > best_quality) {
+        best_quality = q;
+        best = f;
+      }
+      return q;
+    };
+    if (m_frame == Corner_frame::Symmetric_stars) {
+      const bool boundary = m_domain.is_boundary_vertex(v);
+      // Stars spread evenly: interior i, i+d/3, i+2d/3; boundary both ends and a middle one.
+      const std::size_t shifts = boundary ? d - 2 : d;
+      for (std::size_t shift = 0; shift < shifts; ++shift) {
+        const std::array<std::size_t, 3> f =
+            boundary ? std::array<std::size_t, 3>{{1, 1 + ((d - 1) / 2 + shift) % (d - 2) + 1, d}}
+                     : std::array<std::size_t, 3>{{1 + shift, 1 + (shift + (d + 1) / 3) % d,
+                                                   1 + (shift + (2 * d + 1) / 3) % d}};
+        if (consider(f) >= acceptable)
+          return f;
+      }
+      // No good symmetric frame: the best triple of stars, if any is acceptable.
+      for (std::size_t i = 1; i <= d && d <= 16; ++i)
+        for (std::size_t j = i + 1; j <= d; ++j)
+          for (std::size_t k = j + 1; k <= d; ++k)
+            consider({{i, j, k}});
+      if (best_quality >= acceptable)
+        return best;
+    }
+    // The corner and two stars: the best-shaped pair (a face always gives a valid one).
+    const std::size_t stride = d <= 16 ? 1 : d / 16;
+    for (std::size_t i = 1; i <= d; i += stride)
+      for (std::size_t j = i + 1; j <= d; ++j)
+        consider({{0, i, j}});
+    for (std::size_t i = 1; i < d; ++i) // consecutive neighbours span a face: always valid
+      consider({{0, i, i + 1}});
+    CGAL_assertion(best_quality > 0);
+    return best;
+  }
+
+  void build_plan() {
+    const Index V = static_cast<Index>(m_domain.number_of_vertices());
+    const Index E = static_cast<Index>(m_domain.number_of_edges());
+    const Index F = static_cast<Index>(m_domain.number_of_faces());
+    m_degenerate = find_degenerate_frames(m_domain);
+    // degenerate_end[e]: the end of e whose frame is degenerate, or null_index.
+    std::vector<Index> degenerate_end(E, Domain::null_index);
+    for (const auto& d : m_degenerate.frames)
+      degenerate_end[d.edge] = d.vertex;
+    m_rules.reserve(3 * std::size_t(V) + 4 * std::size_t(E));
+
+    // 1. Corner regions (Lemma 3.3.2): every point of the region is the affine image of its
+    // domain point under the map fixed by the three prescribed points.
+    std::vector<Slot> region;
+    std::vector<const Point_2*> region_points;
+    for (Index v = 0; v < V; ++v) {
+      const auto [nb, ne] = m_domain.neighbours(v);
+      const auto [eb, ee] = m_domain.star_edges(v);
+      region.assign(1, vertex_slot(v));
+      region_points.assign(1, &m_domain.point(v));
+      for (auto e = eb; e != ee; ++e)
+        region.push_back(star_slot(*e, v));
+      for (auto w = nb; w != ne; ++w)
+        region_points.push_back(&m_domain.point(*w));
+      const std::array<std::size_t, 3> frame = choose_frame(v);
+      for (std::size_t k : frame)
+        m_free[region[k]] = 1;
+      const Point_2 &a = *region_points[frame[0]], &b = *region_points[frame[1]],
+                    &c = *region_points[frame[2]];
+      for (std::size_t k = 0; k < region.size(); ++k) {
+        if (k == frame[0] || k == frame[1] || k == frame[2])
+          continue;
+        add_rule(region[k], {{region[frame[0]], region[frame[1]], region[frame[2]]}},
+                 barycentric(*region_points[k], a, b, c));
+      }
+    }
+
+    // 2. Corner-inner points at degenerate ends: the diamond at vertex r of edge (r, w)
+    // degenerates to star(r->w) = a CI_left + b CI_right with r = a p_left + b p_right.
+    // Around r the faces form a path or (singular vertex) a cycle of such links: the first
+    // corner-inner of each path is free, the others follow; in a cycle the last link is
+    // implied by the corner region and is skipped.
+    std::vector<char> inner_dependent(F * std::size_t(3), 0);
+    for (Index r = 0; r < V; ++r) {
+      const auto [fb, fe] = m_domain.star_faces(r);
+      const auto [eb, ee] = m_domain.star_edges(r);
+      const auto [nb, ne] = m_domain.neighbours(r);
+      const std::size_t k = static_cast<std::size_t>(fe - fb);
+      const bool boundary = m_domain.is_boundary_vertex(r);
+      // link[i]: the edge to neighbour i joins faces i-1 and i and is degenerate at r.
+      auto link = [&](std::size_t i) {
+        if (boundary && (i == 0 || i == k))
+          return false;
+        return degenerate_end[eb[i % k]] == r;
+      };
+      std::size_t start = 0;
+      if (!boundary) {
+        while (start < k && link(start))
+          ++start;
+        if (start == k)
+          start = 0; // a full cycle: singular vertex
+      }
+      for (std::size_t step = 1; step < k; ++step) {
+        const std::size_t i = (start + step) % k; // face i, reached through edge i
+        if (!link(i))
+          continue;
+        const Index f_prev = fb[(i + k - 1) % k], f_cur = fb[i];
+        const Index e = eb[i];
+        const Point_2& p_prev = m_domain.point(nb[(i + k - 1) % k]);
+        const Point_2& p_cur = m_domain.point(nb[(i + 1) % (boundary ? k + 1 : k)]);
+        // r = (1-t) p_prev + t p_cur on the segment (t by projection, exact when r is on it;
+        // for a numerically degenerate frame the nearest point of the segment): solve
+        // star = (1-t) CI_prev + t CI_cur for CI_cur.
+        const Point_2& pr = m_domain.point(r);
+        const FT dx = p_cur.x() - p_prev.x(), dy = p_cur.y() - p_prev.y();
+        const FT t =
+            ((pr.x() - p_prev.x()) * dx + (pr.y() - p_prev.y()) * dy) / (dx * dx + dy * dy);
+        const FT a = FT(1) - t, b = t;
+        add_rule(corner_inner_slot(f_cur, r),
+                 {{star_slot(e, r), corner_inner_slot(f_prev, r), null_slot}},
+                 {{FT(1) / b, -a / b, FT(0)}}, 2);
+        inner_dependent[3 * std::size_t(f_cur) + std::size_t(position_in_face(f_cur, r))] = 1;
+      }
+    }
+    for (Index f = 0; f < F; ++f)
+      for (int i = 0; i < 3; ++i)
+        if (!inner_dependent[3 * std::size_t(f) + std::size_t(i)])
+          m_free[face_slot(f, i)] = 1;
+
+    // 3. Edge-middle points from each regular end r of an interior edge (r, s): the
+    // diamond (CI_left, star_r, edge-middle near r, CI_right) is the image of
+    // (p_left, r, s, p_right), so the edge point is the combination of s in (p_left, r, p_right).
+    for (Index e = 0; e < E; ++e) {
+      const auto& ends = m_domain.edge(e);
+      if (m_domain.is_boundary_edge(e)) {
+        m_free[edge_slot(e, 1)] = m_free[edge_slot(e, 2)] = 1;
+        const auto& ef = m_domain.edge_faces(e);
+        const Index f = ef[0] != Domain::null_index ? ef[0] : ef[1];
+        m_free[flip_slot(f, e)] = 1;
+        continue;
+      }
+      const auto& ef = m_domain.edge_faces(e);
+      const Point_2& pl = m_domain.point(m_domain.opposite_vertex(ef[0], e));
+      const Point_2& pr = m_domain.point(m_domain.opposite_vertex(ef[1], e));
+      for (int side = 0; side < 2; ++side) {
+        const Index r = ends[std::size_t(side)], s = ends[std::size_t(1 - side)];
+        if (degenerate_end[e] == r)
+          continue;
+        add_rule(edge_middle_slot(e, r),
+                 {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
+                 barycentric(m_domain.point(s), pl, m_domain.point(r), pr));
+      }
+    }
+
+    // 4. Re-routed ends: the edge-middle point next to a degenerate end r comes from the
+    // middle diamond (flip_left, edge-middle near r, edge-middle near s, flip_right), an
+    // image of (p_left, r, s, p_right); p_left, s, p_right are never collinear there.
+    for (const auto& d : m_degenerate.frames) {
+      const Index e = d.edge, r = d.vertex;
+      const auto& ends = m_domain.edge(e);
+      const Index s = ends[0] == r ? ends[1] : ends[0];
+      const auto& ef = m_domain.edge_faces(e);
+      m_free[flip_slot(ef[0], e)] = m_free[flip_slot(ef[1], e)] = 1;
+      add_rule(edge_middle_slot(e, r),
+               {{flip_slot(ef[0], e), edge_middle_slot(e, s), flip_slot(ef[1], e)}},
+               barycentric(m_domain.point(r), m_domain.point(d.apex_left), m_domain.point(s),
+                           m_domain.point(d.apex_right)));
+    }
+
+    // 5. The second flip point of every regular interior edge: flip_right is the image of
+    // p_right in the frame (flip_left, edge-middle near lo, edge-middle near hi).
+    for (Index e = 0; e < E; ++e) {
+      if (m_domain.is_boundary_edge(e) || degenerate_end[e] != Domain::null_index)
+        continue;
+      const auto& ends = m_domain.edge(e);
+      const auto& ef = m_domain.edge_faces(e);
+      m_free[flip_slot(ef[0], e)] = 1;
+      add_rule(flip_slot(ef[1], e),
+               {{flip_slot(ef[0], e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
+               barycentric(m_domain.point(m_domain.opposite_vertex(ef[1], e)),
+                           m_domain.point(m_domain.opposite_vertex(ef[0], e)),
+                           m_domain.point(ends[0]), m_domain.point(ends[1])));
+    }
+
+    for (Slot s = 0; s < m_free.size(); ++s)
+      if (m_free[s])
+        m_free_slots.push_back(s);
+    build_dependents();
+  }
+
+  // Reverse dependencies (slot -> rules reading it) for local edits.
+  void build_dependents() {
+    m_dependent_offsets.assign(m_values.size() + 1, 0);
+    for (const Rule& r : m_rules)
+      for (int i = 0; i < r.size; ++i)
+        ++m_dependent_offsets[r.sources[std::size_t(i)] + 1];
+    for (std::size_t s = 0; s < m_values.size(); ++s)
+      m_dependent_offsets[s + 1] += m_dependent_offsets[s];
+    m_dependents.assign(m_dependent_offsets.back(), 0);
+    std::vector<std::size_t> fill(m_dependent_offsets.begin(), m_dependent_offsets.end() - 1);
+    for (std::size_t i = 0; i < m_rules.size(); ++i)
+      for (int j = 0; j < m_rules[i].size; ++j)
+        m_dependents[fill[m_rules[i].sources[std::size_t(j)]]++] = static_cast<std::uint32_t>(i);
+    m_queued.assign(m_rules.size(), 0);
+  }
+
+  Domain m_domain;
+  Corner_frame m_frame;
+  std::vector<Value> m_values;
+  std::vector<char> m_free;
+  std::vector<Slot> m_free_slots;
+  std::vector<Rule> m_rules;
+  Degenerate_frame_analysis<Index> m_degenerate;
+  std::vector<std::size_t> m_dependent_offsets;
+  std::vector<std::uint32_t> m_dependents;
+  std::vector<char> m_queued;
+};
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_C1_QUINTIC_SPLINE_H

@@ -1,0 +1,477 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_PLANAR_DOMAIN_H
+#define CGAL_TRIANGULAR_SPLINE_PLANAR_DOMAIN_H
+
+#include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/Cartesian_converter.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief a validated triangulation of a planar domain: the parameter domain of a spline.
+
+  Vertices are points of the plane, faces are triangles given by vertex indices and stored
+  counter-clockwise; edges are numbered once each. The domain may be any manifold
+  triangulation of a region of the plane: non-convex, with holes, with sharp corners.
+  Construction checks, with the kernel's exact predicates, everything the spline
+  algorithms rely on, and throws `Invalid_input` with a message naming the culprit:
+
+  - at least one triangle, indices in range, finite coordinates;
+  - no two vertices at the same point, no unused vertex;
+  - no zero-area triangle (exact collinearity test);
+  - every edge in at most two triangles, which lie on opposite sides of it (no fold);
+  - every vertex is manifold: its triangles form one fan, which turns once around an
+    interior vertex and less than once around a boundary vertex.
+
+  Overlaps between parts of the domain that share no vertex (a triangulation that spirals
+  over itself) are not detected.
+
+  The adjacency is stored in flat arrays (no per-element allocation), so domains of
+  \f$10^6\f$ triangles are cheap. Every CGAL triangulation or face graph can be turned into
+  a `Planar_domain` with `domain_from_triangulation_2()` or `domain_from_face_graph()`.
+
+  \tparam GeomTraits a model of `Kernel`
+*/
+template <class GeomTraits>
+class Planar_domain {
+public:
+  using Geom_traits = GeomTraits;
+  using FT = typename Geom_traits::FT;
+  using Point_2 = typename Geom_traits::Point_2;
+  /// index of a vertex, edge or face
+  using Index = std::uint32_t;
+  /// marks a missing neighbour (the outside of a boundary edge)
+  static constexpr Index null_index = (std::numeric_limits<Index>::max)();
+
+  /// creates the domain from points and triangles (vertex indices, any orientation: each
+  /// triangle is reoriented counter-clockwise).
+  /// \throws Invalid_input if the triangulation violates one of the rules above
+  Planar_domain(std::vector<Point_2> points, std::vector<std::array<Index, 3>> triangles,
+                const Geom_traits& traits = Geom_traits())
+      : m_points(std::move(points)), m_faces(std::move(triangles)), m_traits(traits) {
+    validate_and_orient();
+    build_edges();
+    build_stars();
+  }
+
+  /// \name Sizes
+  /// @{
+  std::size_t number_of_vertices() const { return m_points.size(); }
+  std::size_t number_of_faces() const { return m_faces.size(); }
+  std::size_t number_of_edges() const { return m_edges.size(); }
+  /// returns the number of edges with two incident faces
+  std::size_t number_of_interior_edges() const { return m_edges.size() - m_boundary_edges; }
+  std::size_t number_of_boundary_edges() const { return m_boundary_edges; }
+  /// returns the number of vertices on the boundary
+  std::size_t number_of_boundary_vertices() const { return m_boundary_vertices; }
+  std::size_t number_of_interior_vertices() const { return m_points.size() - m_boundary_vertices; }
+  /// returns the number of connected components (through shared edges)
+  std::size_t number_of_components() const { return m_components; }
+  /// returns the number of closed boundary curves (outer boundaries and holes)
+  std::size_t number_of_boundary_loops() const { return m_boundary_loops; }
+  /// returns `true` iff the domain is a topological disk: connected, one boundary curve,
+  /// Euler characteristic 1 (then Morgan and Scott's dimension formula applies).
+  bool is_simply_connected() const {
+    const long long chi = static_cast<long long>(number_of_vertices()) -
+                          static_cast<long long>(number_of_edges()) +
+                          static_cast<long long>(number_of_faces());
+    return m_components == 1 && m_boundary_loops == 1 && chi == 1;
+  }
+  /// @}
+
+  /// \name Elements
+  /// @{
+  const Point_2& point(Index v) const { return m_points[v]; }
+  const std::vector<Point_2>& points() const { return m_points; }
+  /// returns the vertices of face `f`, counter-clockwise
+  const std::array<Index, 3>& face(Index f) const { return m_faces[f]; }
+  const std::vector<std::array<Index, 3>>& faces() const { return m_faces; }
+  /// returns the two vertices of edge `e`, the smaller index first (the canonical
+  /// orientation of the edge's control-point slots)
+  const std::array<Index, 2>& edge(Index e) const { return m_edges[e]; }
+  /// returns the faces on the left and on the right of edge `e` oriented from
+  /// `edge(e)[0]` to `edge(e)[1]`; `null_index` where there is none
+  const std::array<Index, 2>& edge_faces(Index e) const { return m_edge_faces[e]; }
+  bool is_boundary_edge(Index e) const {
+    return m_edge_faces[e][0] == null_index || m_edge_faces[e][1] == null_index;
+  }
+  /// returns edge `i` of face `f`: the edge opposite `face(f)[i]`
+  Index face_edge(Index f, int i) const { return m_face_edges[f][static_cast<std::size_t>(i)]; }
+  /// returns the vertex of face `f` opposite its edge `e`
+  Index opposite_vertex(Index f, Index e) const {
+    for (int i = 0; i < 3; ++i)
+      if (m_face_edges[f][static_cast<std::size_t>(i)] == e)
+        return m_faces[f][static_cast<std::size_t>(i)];
+    return null_index;
+  }
+  bool is_boundary_vertex(Index v) const { return m_vertex_boundary[v] != 0; }
+  /// returns the neighbours of `v` in counter-clockwise order; for a boundary vertex the
+  /// first and the last are on the boundary, and there is one more neighbour than faces
+  std::pair<const Index*, const Index*> neighbours(Index v) const {
+    return {m_star_neighbours.data() + m_neighbour_offsets[v],
+            m_star_neighbours.data() + m_neighbour_offsets[v + 1]};
+  }
+  /// returns the number of neighbours of `v`
+  std::size_t degree(Index v) const { return m_neighbour_offsets[v + 1] - m_neighbour_offsets[v]; }
+  /// returns the faces around `v` counter-clockwise: face `i` is
+  /// (`v`, neighbour `i`, neighbour `i+1` mod degree)
+  std::pair<const Index*, const Index*> star_faces(Index v) const {
+    return {m_star_faces.data() + m_face_offsets[v], m_star_faces.data() + m_face_offsets[v + 1]};
+  }
+  /// returns the edges around `v` in the order of `neighbours(v)`
+  std::pair<const Index*, const Index*> star_edges(Index v) const {
+    return {m_star_edges.data() + m_neighbour_offsets[v],
+            m_star_edges.data() + m_neighbour_offsets[v + 1]};
+  }
+  const Geom_traits& geom_traits() const { return m_traits; }
+  /// @}
+
+private:
+  std::string vertex_name(Index v) const {
+    return "vertex " + std::to_string(v) + " " + internal::point_to_string(m_points[v]);
+  }
+
+  void validate_and_orient() {
+    if (m_faces.empty())
+      throw Invalid_input("domain: no triangle");
+    const std::size_t n = m_points.size();
+    for (std::size_t v = 0; v < n; ++v)
+      if (!CGAL::is_finite(m_points[v].x()) || !CGAL::is_finite(m_points[v].y()))
+        throw Invalid_input("domain: " + vertex_name(static_cast<Index>(v)) +
+                            " has a non-finite coordinate");
+    if (n >= null_index)
+      throw Invalid_input("domain: too many vertices");
+    // Duplicate points, decided by exact comparison after sorting.
+    std::vector<Index> order(n);
+    std::iota(order.begin(), order.end(), Index(0));
+    auto less = m_traits.less_xy_2_object();
+    std::sort(order.begin(), order.end(),
+              [&](Index a, Index b) { return less(m_points[a], m_points[b]); });
+    for (std::size_t i = 1; i < n; ++i)
+      if (m_points[order[i - 1]] == m_points[order[i]])
+        throw Invalid_input("domain: vertices " + std::to_string(order[i - 1]) + " and " +
+                            std::to_string(order[i]) + " are the same point " +
+                            internal::point_to_string(m_points[order[i]]));
+    std::vector<char> used(n, 0);
+    auto orientation = m_traits.orientation_2_object();
+    for (std::size_t f = 0; f < m_faces.size(); ++f) {
+      auto& t = m_faces[f];
+      for (Index v : t)
+        if (v >= n)
+          throw Invalid_input("domain: triangle " + std::to_string(f) + " uses vertex " +
+                              std::to_string(v) + " but there are only " + std::to_string(n));
+      if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+        throw Invalid_input("domain: triangle " + std::to_string(f) + " repeats a vertex");
+      const CGAL::Orientation o = orientation(m_points[t[0]], m_points[t[1]], m_points[t[2]]);
+      if (o == CGAL::COLLINEAR)
+        throw Invalid_input("domain: triangle " + std::to_string(f) + " (" + std::to_string(t[0]) +
+                            ", " + std::to_string(t[1]) + ", " + std::to_string(t[2]) +
+                            ") has zero area (collinear corners)");
+      if (o == CGAL::CLOCKWISE)
+        std::swap(t[1], t[2]);
+      for (Index v : t)
+        used[v] = 1;
+    }
+    for (std::size_t v = 0; v < n; ++v)
+      if (!used[v])
+        throw Invalid_input("domain: " + vertex_name(static_cast<Index>(v)) +
+                            " is not used by any triangle");
+  }
+
+  void build_edges() {
+    // Half-edges (a -> b) of counter-clockwise faces, keyed by the unordered pair.
+    struct Half_edge {
+      std::uint64_t key;
+      Index face;
+      int side;     // index of the edge in its face (opposite vertex)
+      bool forward; // a < b
+    };
+    std::vector<Half_edge> half_edges;
+    half_edges.reserve(3 * m_faces.size());
+    for (std::size_t f = 0; f < m_faces.size(); ++f)
+      for (int i = 0; i < 3; ++i) {
+        const Index a = m_faces[f][static_cast<std::size_t>((i + 1) % 3)];
+        const Index b = m_faces[f][static_cast<std::size_t>((i + 2) % 3)];
+        const Index lo = (std::min)(a, b), hi = (std::max)(a, b);
+        half_edges.push_back({(std::uint64_t(lo) << 32) | hi, static_cast<Index>(f), i, a < b});
+      }
+    std::sort(half_edges.begin(), half_edges.end(),
+              [](const Half_edge& x, const Half_edge& y) { return x.key < y.key; });
+    m_face_edges.assign(m_faces.size(), {{null_index, null_index, null_index}});
+    for (std::size_t i = 0; i < half_edges.size();) {
+      std::size_t j = i;
+      while (j < half_edges.size() && half_edges[j].key == half_edges[i].key)
+        ++j;
+      const Index lo = static_cast<Index>(half_edges[i].key >> 32);
+      const Index hi = static_cast<Index>(half_edges[i].key & 0xffffffffu);
+      if (j - i > 2)
+        throw Invalid_input("domain: edge (" + std::to_string(lo) + ", " + std::to_string(hi) +
+                            ") is shared by " + std::to_string(j - i) +
+                            " triangles (non-manifold)");
+      const Index e = static_cast<Index>(m_edges.size());
+      m_edges.push_back({{lo, hi}});
+      std::array<Index, 2> faces{{null_index, null_index}};
+      for (std::size_t h = i; h < j; ++h) {
+        // A face traversing lo -> hi counter-clockwise lies on the left of the edge.
+        Index& slot = faces[half_edges[h].forward ? 0 : 1];
+        if (slot != null_index)
+          throw Invalid_input("domain: triangles " + std::to_string(slot) + " and " +
+                              std::to_string(half_edges[h].face) + " overlap along edge (" +
+                              std::to_string(lo) + ", " + std::to_string(hi) + ")");
+        slot = half_edges[h].face;
+        m_face_edges[half_edges[h].face][static_cast<std::size_t>(half_edges[h].side)] = e;
+      }
+      m_edge_faces.push_back(faces);
+      if (faces[0] == null_index || faces[1] == null_index)
+        ++m_boundary_edges;
+      i = j;
+    }
+    count_components_and_loops();
+  }
+
+  void count_components_and_loops() {
+    // Components through shared edges.
+    std::vector<Index> parent(m_faces.size());
+    std::iota(parent.begin(), parent.end(), Index(0));
+    auto find = [&](Index x) {
+      while (parent[x] != x)
+        x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    for (const auto& ef : m_edge_faces)
+      if (ef[0] != null_index && ef[1] != null_index)
+        parent[find(ef[0])] = find(ef[1]);
+    m_components = 0;
+    for (std::size_t f = 0; f < parent.size(); ++f)
+      if (find(static_cast<Index>(f)) == f)
+        ++m_components;
+    // Boundary loops: at a manifold boundary vertex exactly one boundary edge leaves and
+    // one arrives, so the boundary edges form disjoint cycles; count them by union-find.
+    std::vector<Index> vparent(m_points.size());
+    std::iota(vparent.begin(), vparent.end(), Index(0));
+    auto vfind = [&](Index x) {
+      while (vparent[x] != x)
+        x = vparent[x] = vparent[vparent[x]];
+      return x;
+    };
+    std::vector<char> on_boundary(m_points.size(), 0);
+    for (std::size_t e = 0; e < m_edges.size(); ++e)
+      if (is_boundary_edge(static_cast<Index>(e))) {
+        on_boundary[m_edges[e][0]] = on_boundary[m_edges[e][1]] = 1;
+        vparent[vfind(m_edges[e][0])] = vfind(m_edges[e][1]);
+      }
+    m_boundary_loops = 0;
+    for (std::size_t v = 0; v < m_points.size(); ++v)
+      if (on_boundary[v] && vfind(static_cast<Index>(v)) == v)
+        ++m_boundary_loops;
+  }
+
+  void build_stars() {
+    const std::size_t n = m_points.size();
+    // Faces per vertex (CSR), then ordered into one fan per vertex.
+    std::vector<std::size_t> count(n + 1, 0);
+    for (const auto& t : m_faces)
+      for (Index v : t)
+        ++count[v + 1];
+    std::vector<std::size_t> offset(n + 1, 0);
+    for (std::size_t v = 0; v < n; ++v)
+      offset[v + 1] = offset[v] + count[v + 1];
+    std::vector<Index> incident(offset[n]);
+    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
+    for (std::size_t f = 0; f < m_faces.size(); ++f)
+      for (Index v : m_faces[f])
+        incident[fill[v]++] = static_cast<Index>(f);
+
+    m_vertex_boundary.assign(n, 0);
+    m_face_offsets.assign(n + 1, 0);
+    m_neighbour_offsets.assign(n + 1, 0);
+    m_star_faces.reserve(offset[n]);
+    m_star_neighbours.reserve(offset[n] + n);
+    m_star_edges.reserve(offset[n] + n);
+    auto orientation = m_traits.orientation_2_object();
+    for (std::size_t vi = 0; vi < n; ++vi) {
+      const Index v = static_cast<Index>(vi);
+      const std::size_t begin = offset[v], end = offset[v + 1];
+      // Position of v in face f, and the next / previous vertex counter-clockwise.
+      auto next_of = [&](Index f) {
+        const auto& t = m_faces[f];
+        const int i = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+        return t[static_cast<std::size_t>((i + 1) % 3)];
+      };
+      auto prev_of = [&](Index f) {
+        const auto& t = m_faces[f];
+        const int i = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+        return t[static_cast<std::size_t>((i + 2) % 3)];
+      };
+      auto edge_between = [&](Index f, Index w) {
+        // the edge of f joining v and w is opposite the third vertex
+        const auto& t = m_faces[f];
+        for (int i = 0; i < 3; ++i)
+          if (t[static_cast<std::size_t>(i)] != v && t[static_cast<std::size_t>(i)] != w)
+            return m_face_edges[f][static_cast<std::size_t>(i)];
+        return null_index;
+      };
+      auto face_across = [&](Index e, Index f) {
+        const auto& ef = m_edge_faces[e];
+        return ef[0] == f ? ef[1] : ef[0];
+      };
+      // Walk clockwise from any face to the start of the fan (a boundary edge, or back).
+      Index start = incident[begin];
+      bool boundary = false;
+      for (std::size_t steps = 0; steps < end - begin; ++steps) {
+        const Index e = edge_between(start, next_of(start));
+        const Index before = face_across(e, start);
+        if (before == null_index) {
+          boundary = true;
+          break;
+        }
+        start = before;
+      }
+      // Walk counter-clockwise: face (v, w_i, w_{i+1}).
+      Index f = start;
+      const Index first = next_of(f);
+      m_star_neighbours.push_back(first);
+      m_star_edges.push_back(edge_between(f, first));
+      std::size_t faces_in_fan = 0;
+      for (;;) {
+        m_star_faces.push_back(f);
+        ++faces_in_fan;
+        const Index w = prev_of(f);
+        const Index e = edge_between(f, w);
+        const Index after = face_across(e, f);
+        if (after == null_index || after == start) {
+          if (after == null_index) {
+            m_star_neighbours.push_back(w);
+            m_star_edges.push_back(e);
+          }
+          break;
+        }
+        if (faces_in_fan > end - begin)
+          break;
+        m_star_neighbours.push_back(w);
+        m_star_edges.push_back(e);
+        f = after;
+      }
+      if (faces_in_fan != end - begin)
+        throw Invalid_input("domain: " + vertex_name(v) +
+                            " is non-manifold (its triangles form more than one fan)");
+      m_vertex_boundary[v] = boundary ? 1 : 0;
+      if (boundary)
+        ++m_boundary_vertices;
+      m_face_offsets[v + 1] = m_star_faces.size();
+      m_neighbour_offsets[v + 1] = m_star_neighbours.size();
+
+      // The fan must turn once (interior) or less than once (boundary): no later cone may
+      // contain the direction of the first neighbour (exact orientation tests).
+      const auto [nb, ne] = neighbours(v);
+      const std::size_t degree = static_cast<std::size_t>(ne - nb);
+      const Point_2& c = m_points[v];
+      const Point_2& w0 = m_points[nb[0]];
+      auto ordered = m_traits.collinear_are_ordered_along_line_2_object();
+      for (std::size_t i = 1; i + 1 < degree; ++i) {
+        // Half-open cone [a, b) of the counter-clockwise turn from a to b (< pi).
+        const Point_2& a = m_points[nb[i]];
+        const Point_2& b = m_points[nb[(i + 1) % degree]];
+        const CGAL::Orientation from_a = orientation(c, a, w0);
+        const bool after_a =
+            from_a == CGAL::LEFT_TURN || (from_a == CGAL::COLLINEAR && !ordered(a, c, w0));
+        if (after_a && orientation(c, w0, b) == CGAL::LEFT_TURN)
+          throw Invalid_input("domain: the triangles around " + vertex_name(v) +
+                              " overlap (they turn more than once around it)");
+      }
+      if (boundary) {
+        const Point_2& last = m_points[nb[degree - 1]];
+        if (orientation(c, last, w0) == CGAL::COLLINEAR && !ordered(w0, c, last))
+          throw Invalid_input("domain: the triangles around " + vertex_name(v) +
+                              " close up without closing (a slit)");
+      }
+    }
+  }
+
+  std::vector<Point_2> m_points;
+  std::vector<std::array<Index, 3>> m_faces;
+  Geom_traits m_traits;
+  std::vector<std::array<Index, 2>> m_edges;
+  std::vector<std::array<Index, 2>> m_edge_faces;
+  std::vector<std::array<Index, 3>> m_face_edges;
+  std::size_t m_boundary_edges = 0;
+  std::size_t m_boundary_vertices = 0;
+  std::size_t m_components = 0;
+  std::size_t m_boundary_loops = 0;
+  std::vector<char> m_vertex_boundary;
+  std::vector<std::size_t> m_face_offsets, m_neighbour_offsets;
+  std::vector<Index> m_star_faces, m_star_neighbours, m_star_edges;
+};
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief returns `domain` with its points converted to the kernel `K2` (exact when `K2` is
+  exact: the double coordinates are represented exactly).
+*/
+template <class K2, class K1>
+Planar_domain<K2> convert_domain(const Planar_domain<K1>& domain) {
+  const CGAL::Cartesian_converter<K1, K2> convert;
+  std::vector<typename K2::Point_2> points;
+  points.reserve(domain.number_of_vertices());
+  for (const auto& p : domain.points())
+    points.push_back(convert(p));
+  return Planar_domain<K2>(std::move(points), domain.faces());
+}
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief returns the domain made of the finite faces of a CGAL 2D triangulation for which
+  `in_domain(face_handle)` is `true` (e.g. the faces inside a constrained triangulation's
+  polygon, marked by nesting level), and writes into `vertex_map` the triangulation vertex
+  handle of each domain vertex.
+  \tparam Triangulation a `CGAL::Triangulation_2` (Delaunay, constrained, ...) whose
+  points are `GeomTraits::Point_2`
+*/
+template <class GeomTraits, class Triangulation, class InDomain, class VertexHandles>
+Planar_domain<GeomTraits> domain_from_triangulation_2(const Triangulation& triangulation,
+                                                      const InDomain& in_domain,
+                                                      VertexHandles& vertex_map) {
+  using Index = typename Planar_domain<GeomTraits>::Index;
+  std::vector<typename GeomTraits::Point_2> points;
+  std::vector<std::array<Index, 3>> triangles;
+  std::map<typename Triangulation::Vertex_handle, Index> index;
+  vertex_map.clear();
+  for (auto f : triangulation.finite_face_handles()) {
+    if (!in_domain(f))
+      continue;
+    std::array<Index, 3> t;
+    for (int i = 0; i < 3; ++i) {
+      auto v = f->vertex(i);
+      auto [it, inserted] = index.emplace(v, static_cast<Index>(points.size()));
+      if (inserted) {
+        points.push_back(v->point());
+        vertex_map.push_back(v);
+      }
+      t[static_cast<std::size_t>(i)] = it->second;
+    }
+    triangles.push_back(t);
+  }
+  return Planar_domain<GeomTraits>(std::move(points), std::move(triangles));
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_PLANAR_DOMAIN_H

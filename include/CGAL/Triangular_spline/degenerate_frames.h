@@ -1,0 +1,232 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_DEGENERATE_FRAMES_H
+#define CGAL_TRIANGULAR_SPLINE_DEGENERATE_FRAMES_H
+
+#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/Algebraic_structure_traits.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief a degenerate frame (Xu §4.4.4): at the end `vertex` of the interior edge `edge`,
+  the apexes of the two faces of the edge are collinear with `vertex`.
+
+  There the C^1 diamond of the edge next to `vertex` cannot be solved for its edge-middle
+  point (the barycentric weight it divides by is zero), so the propagation must be
+  re-routed or the vertex moved.
+*/
+template <class Index>
+struct Degenerate_frame_t {
+  Index edge;       ///< the interior edge
+  Index vertex;     ///< the end of the edge where the apexes are collinear with it
+  Index apex_left;  ///< apex of the face on the left of the edge (lo -> hi)
+  Index apex_right; ///< apex of the face on the right
+  /// `false`: exactly collinear; `true`: collinear only up to double rounding (inexact
+  /// kernels only, see `find_degenerate_frames()`)
+  bool numerical = false;
+};
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief the degenerate frames of a domain and its singular vertices.
+*/
+template <class Index>
+struct Degenerate_frame_analysis {
+  std::vector<Degenerate_frame_t<Index>> frames; ///< every degenerate edge end
+  /// interior vertices all of whose edges are degenerate at them: degree 4 with the edges
+  /// on two lines (the vertices counted by \f$\sigma\f$ in the dimension of \f$S^1_5\f$)
+  std::vector<Index> singular_vertices;
+};
+
+namespace internal {
+
+// For inexact kernels: are p, r, q collinear up to the rounding of their coordinates? True
+// when the sine of the angle at r is below 1e-12. Such frames come from data that is
+// collinear in decimal but not in binary (0.1, 1/3, ...): solving them exactly would need
+// weights of 1e16 and more, re-routing them leaves a C^1 defect of the same tiny relative
+// size, which the certificate reports.
+template <class Point_2>
+bool numerically_collinear(const Point_2& p, const Point_2& r, const Point_2& q) {
+  const double ax = CGAL::to_double(p.x()) - CGAL::to_double(r.x());
+  const double ay = CGAL::to_double(p.y()) - CGAL::to_double(r.y());
+  const double bx = CGAL::to_double(q.x()) - CGAL::to_double(r.x());
+  const double by = CGAL::to_double(q.y()) - CGAL::to_double(r.y());
+  const double cross = ax * by - ay * bx;
+  const double dot = ax * bx + ay * by;
+  // Opposite directions only: apexes on the two sides with r between them.
+  return dot < 0 && std::abs(cross) <= 1e-12 * std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief finds every degenerate frame of `domain` with the kernel's exact collinearity test.
+
+  At most one end of an edge can be degenerate: if both were, the four vertices of the two
+  faces would be collinear. With an inexact number type, frames whose apexes are collinear
+  with the end up to rounding (sine of the angle below \f$10^{-12}\f$) are reported too,
+  flagged `numerical`: the double build re-routes them instead of dividing by a weight that
+  is zero but for rounding.
+*/
+template <class GeomTraits>
+Degenerate_frame_analysis<typename Planar_domain<GeomTraits>::Index>
+find_degenerate_frames(const Planar_domain<GeomTraits>& domain) {
+  using Index = typename Planar_domain<GeomTraits>::Index;
+  constexpr bool exact = CGAL::Algebraic_structure_traits<typename GeomTraits::FT>::Is_exact::value;
+  Degenerate_frame_analysis<Index> result;
+  auto collinear = domain.geom_traits().collinear_2_object();
+  std::vector<unsigned> degenerate_ends(domain.number_of_vertices(), 0);
+  for (Index e = 0; e < domain.number_of_edges(); ++e) {
+    if (domain.is_boundary_edge(e))
+      continue;
+    const auto& ef = domain.edge_faces(e);
+    const Index left = domain.opposite_vertex(ef[0], e);
+    const Index right = domain.opposite_vertex(ef[1], e);
+    for (Index end : domain.edge(e)) {
+      const auto& p = domain.point(left);
+      const auto& r = domain.point(end);
+      const auto& q = domain.point(right);
+      bool numerical = false;
+      if (!collinear(p, r, q)) {
+        if (exact || !internal::numerically_collinear(p, r, q))
+          continue;
+        numerical = true;
+      }
+      result.frames.push_back({e, end, left, right, numerical});
+      ++degenerate_ends[end];
+    }
+  }
+  for (Index v = 0; v < domain.number_of_vertices(); ++v)
+    if (!domain.is_boundary_vertex(v) && degenerate_ends[v] == domain.degree(v))
+      result.singular_vertices.push_back(v);
+  return result;
+}
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief one vertex moved by `perturb_degenerate_vertices()`.
+*/
+template <class Point_2, class Index>
+struct Vertex_move {
+  Index vertex;        ///< the vertex index (unchanged by the move)
+  Point_2 from, to;    ///< old and new position
+  double distance = 0; ///< Euclidean length of the move (in double)
+};
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief returns a copy of `domain` in which the vertices with degenerate frames are moved
+  just enough that no frame is degenerate, and reports the moves (Xu §4.4.4, second fix).
+
+  Each offending vertex is tried at distances \f$2^{-k} \ell\f$ (\f$\ell\f$ its shortest
+  incident edge, \f$k = 20, 19, \dots, 3\f$, smallest first) in eight directions; the first
+  position is kept for which every incident triangle keeps its orientation and no edge end
+  whose frame involves the vertex is degenerate, all decided with exact orientation tests.
+  The scan is repeated until no degenerate frame is left. Moving a boundary vertex bends the
+  boundary by that amount; vertex indices are unchanged, so data attached to vertices
+  stays valid.
+  \throws Invalid_input if no admissible move is found (not observed in practice).
+*/
+template <class GeomTraits>
+Planar_domain<GeomTraits> perturb_degenerate_vertices(
+    const Planar_domain<GeomTraits>& domain,
+    std::vector<Vertex_move<typename GeomTraits::Point_2,
+                            typename Planar_domain<GeomTraits>::Index>>& moves) {
+  using Index = typename Planar_domain<GeomTraits>::Index;
+  using Point_2 = typename GeomTraits::Point_2;
+  using FT = typename GeomTraits::FT;
+  constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
+  moves.clear();
+  Planar_domain<GeomTraits> current = domain;
+  for (int round = 0; round < 8; ++round) {
+    const auto analysis = find_degenerate_frames(current);
+    if (analysis.frames.empty())
+      return current;
+    std::set<Index> offenders;
+    for (const auto& f : analysis.frames)
+      offenders.insert(f.vertex);
+    std::vector<Point_2> points = current.points();
+    auto orientation = current.geom_traits().orientation_2_object();
+    auto collinear = current.geom_traits().collinear_2_object();
+    // Is every frame and triangle involving v fine with v at `p`?
+    auto admissible = [&](Index v, const Point_2& p) {
+      auto at = [&](Index w) -> const Point_2& { return w == v ? p : points[w]; };
+      const auto [fb, fe] = current.star_faces(v);
+      for (auto f = fb; f != fe; ++f) {
+        const auto& t = current.face(*f);
+        if (orientation(at(t[0]), at(t[1]), at(t[2])) != CGAL::LEFT_TURN)
+          return false;
+      }
+      // Frames at edges touching v's star: both ends of every interior edge of a face
+      // around v (this covers v as an end and v as an apex).
+      for (auto f = fb; f != fe; ++f)
+        for (int i = 0; i < 3; ++i) {
+          const Index e = current.face_edge(*f, i);
+          if (current.is_boundary_edge(e))
+            continue;
+          const auto& ef = current.edge_faces(e);
+          const Index left = current.opposite_vertex(ef[0], e);
+          const Index right = current.opposite_vertex(ef[1], e);
+          for (Index end : current.edge(e))
+            if (collinear(at(left), at(end), at(right)) ||
+                (!exact && internal::numerically_collinear(at(left), at(end), at(right))))
+              return false;
+        }
+      return true;
+    };
+    for (Index v : offenders) {
+      double shortest = std::numeric_limits<double>::infinity();
+      const auto [nb, ne] = current.neighbours(v);
+      for (auto w = nb; w != ne; ++w) {
+        const double dx = CGAL::to_double(points[*w].x() - points[v].x());
+        const double dy = CGAL::to_double(points[*w].y() - points[v].y());
+        shortest = (std::min)(shortest, std::sqrt(dx * dx + dy * dy));
+      }
+      // A power of two below the shortest edge keeps the steps exact multiples in binary.
+      const double unit = std::exp2(std::floor(std::log2(shortest)));
+      static const int directions[8][2] = {{1, 0}, {0, 1},  {-1, 0},  {0, -1},
+                                           {1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+      bool moved = false;
+      for (int k = 20; k >= 3 && !moved; --k) {
+        const FT step = FT(std::ldexp(unit, -k));
+        for (const auto& d : directions) {
+          const Point_2 candidate(points[v].x() + FT(d[0]) * step, points[v].y() + FT(d[1]) * step);
+          if (candidate == points[v] || !admissible(v, candidate))
+            continue;
+          const double dx = CGAL::to_double(candidate.x() - points[v].x());
+          const double dy = CGAL::to_double(candidate.y() - points[v].y());
+          moves.push_back({v, points[v], candidate, std::sqrt(dx * dx + dy * dy)});
+          points[v] = candidate;
+          moved = true;
+          break;
+        }
+      }
+      if (!moved)
+        throw Invalid_input("perturbation: no small move of vertex " + std::to_string(v) + " " +
+                            internal::point_to_string(points[v]) +
+                            " removes its degenerate frames");
+    }
+    current = Planar_domain<GeomTraits>(std::move(points), current.faces(), current.geom_traits());
+  }
+  if (!find_degenerate_frames(current).frames.empty())
+    throw Invalid_input("perturbation: degenerate frames remain after 8 rounds");
+  return current;
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_DEGENERATE_FRAMES_H

@@ -1,0 +1,385 @@
+// Tests of Xu's C^1 quintic spline: plan, propagation, degenerate frames (re-routing and
+// perturbation), exact certification, dimension counts, local control, fitting.
+
+#include "test_support.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Triangular_spline/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Spline_space.h>
+#include <CGAL/Triangular_spline/certify.h>
+#include <CGAL/Triangular_spline/shape.h>
+
+#include <map>
+#include <set>
+#include <string>
+
+using namespace ts_test;
+using TS::C1_quintic_spline;
+using TS::Corner_frame;
+using TS::Fit;
+using TS::Planar_domain;
+
+namespace {
+
+using Index = std::uint32_t;
+
+// ---- Domain families of the issue ------------------------------------------------------
+
+template <class K>
+Planar_domain<K> grid(int n, bool criss_cross) {
+  using FT = typename K::FT;
+  std::vector<typename K::Point_2> points;
+  std::vector<std::array<Index, 3>> triangles;
+  auto id = [n](int i, int j) { return Index(j * (n + 1) + i); };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      points.emplace_back(FT(i), FT(j));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if (criss_cross) {
+        const Index c = Index(points.size());
+        points.emplace_back(FT(2 * i + 1) / 2, FT(2 * j + 1) / 2);
+        triangles.push_back({{id(i, j), id(i + 1, j), c}});
+        triangles.push_back({{id(i + 1, j), id(i + 1, j + 1), c}});
+        triangles.push_back({{id(i + 1, j + 1), id(i, j + 1), c}});
+        triangles.push_back({{id(i, j + 1), id(i, j), c}});
+      } else {
+        triangles.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
+        triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
+      }
+    }
+  return Planar_domain<K>(points, triangles);
+}
+
+// An L-shaped 6x6 grid (re-entrant corner) with a 1x1 hole, cells split alternately.
+template <class K>
+Planar_domain<K> l_shape_with_hole() {
+  using FT = typename K::FT;
+  const int n = 6;
+  std::vector<typename K::Point_2> points;
+  std::map<std::pair<int, int>, Index> id;
+  std::vector<std::array<Index, 3>> triangles;
+  auto vertex = [&](int i, int j) {
+    auto [it, inserted] = id.emplace(std::make_pair(i, j), Index(points.size()));
+    if (inserted)
+      points.emplace_back(FT(i) + FT(j % 2) / 5, FT(j) + FT(i % 3) / 7); // irregular, rational
+    return it->second;
+  };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      if (i >= 3 && j >= 3)
+        continue; // the L cut
+      if (i == 1 && j == 1)
+        continue; // the hole
+      const Index a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1),
+                  d = vertex(i, j + 1);
+      if ((i + j) % 2 == 0) {
+        triangles.push_back({{a, b, c}});
+        triangles.push_back({{a, c, d}});
+      } else {
+        triangles.push_back({{a, b, d}});
+        triangles.push_back({{b, c, d}});
+      }
+    }
+  return Planar_domain<K>(points, triangles);
+}
+
+// A fan around the origin whose spokes lie on `lines` straight lines through the centre.
+template <class K>
+Planar_domain<K> fan(int lines) {
+  using FT = typename K::FT;
+  static const int directions[8][2] = {{2, 0},  {2, 1},   {1, 2},   {-1, 2},
+                                       {-2, 0}, {-2, -1}, {-1, -2}, {1, -2}};
+  std::vector<typename K::Point_2> points{typename K::Point_2(0, 0)};
+  const int spokes = 2 * lines;
+  for (int k = 0; k < spokes; ++k) {
+    const int d = lines == 2 ? 2 * k : k; // 2 lines: axes only
+    points.emplace_back(FT(directions[d][0]), FT(directions[d][1]));
+  }
+  std::vector<std::array<Index, 3>> triangles;
+  for (int k = 0; k < spokes; ++k)
+    triangles.push_back({{0, Index(1 + k), Index(1 + (k + 1) % spokes)}});
+  return Planar_domain<K>(points, triangles);
+}
+
+template <class K>
+Planar_domain<K> random_delaunay(int n, unsigned seed) {
+  Random_rationals random(seed);
+  CGAL::Delaunay_triangulation_2<K> dt;
+  for (int i = 0; i < n; ++i)
+    dt.insert(random.template point<K>());
+  std::vector<typename CGAL::Delaunay_triangulation_2<K>::Vertex_handle> handles;
+  return TS::domain_from_triangulation_2<K>(
+      dt, [](auto) { return true; }, handles);
+}
+
+template <class K>
+std::vector<std::pair<std::string, Planar_domain<K>>> all_domains() {
+  return {{"random Delaunay", random_delaunay<K>(40, 7)},
+          {"L with hole", l_shape_with_hole<K>()},
+          {"grid one diagonal", grid<K>(4, false)},
+          {"criss-cross grid", grid<K>(3, true)},
+          {"fan two lines", fan<K>(2)},
+          {"fan four lines", fan<K>(4)}};
+}
+
+// Random values in every free slot, then propagation.
+template <class K, class Value>
+void randomize(C1_quintic_spline<K, Value>& spline, Random_rationals& random) {
+  for (auto s : spline.free_slots())
+    spline.set_free_value(s, random.template value<K, Value>());
+  spline.propagate();
+}
+
+template <class K, class Value>
+TS::C1_certificate certify(const C1_quintic_spline<K, Value>& spline) {
+  return TS::certify_C1(spline.domain(), [&](Index f) { return spline.patch(f); });
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------
+
+TEST(Spline, ExactCertificationOnEveryDomainWithBothFixes) {
+  using K = Exact_kernel;
+  Random_rationals random(11);
+  for (const auto& [name, domain] : all_domains<K>()) {
+    for (Corner_frame frame : {Corner_frame::Symmetric_stars, Corner_frame::Corner_and_two_stars}) {
+      // Fix 1: re-routing (the plan handles the degenerate frames).
+      C1_quintic_spline<K> spline(domain, frame);
+      randomize(spline, random);
+      const TS::C1_certificate c = certify(spline);
+      EXPECT_TRUE(c.exact);
+      EXPECT_TRUE(c.certified) << name << "\n" << c.summary();
+      EXPECT_EQ(c.interior_edges, domain.number_of_interior_edges());
+      // Parametric values too.
+      C1_quintic_spline<K, K::Vector_3> parametric(domain, frame);
+      randomize(parametric, random);
+      EXPECT_TRUE(certify(parametric).certified) << name << " (parametric)";
+    }
+    // Fix 2: perturbation, then the generic scheme (no degenerate frame left).
+    std::vector<TS::Vertex_move<K::Point_2, Index>> moves;
+    const Planar_domain<K> moved = TS::perturb_degenerate_vertices(domain, moves);
+    EXPECT_TRUE(TS::find_degenerate_frames(moved).frames.empty()) << name;
+    EXPECT_EQ(moves.empty(), TS::find_degenerate_frames(domain).frames.empty()) << name;
+    for (const auto& move : moves) {
+      EXPECT_GT(move.distance, 0.0);
+      EXPECT_LT(move.distance, 0.2) << "a perturbation must be small";
+    }
+    C1_quintic_spline<K> spline(moved);
+    EXPECT_TRUE(spline.degenerate_frames().empty());
+    randomize(spline, random);
+    EXPECT_TRUE(certify(spline).certified) << name << " (perturbed)";
+  }
+}
+
+TEST(Spline, DoubleBuildHasRoundOffResidualsOnly) {
+  using K = Epick;
+  Random_rationals random(12);
+  for (const auto& [name, domain] : all_domains<K>()) {
+    C1_quintic_spline<K> spline(domain);
+    randomize(spline, random);
+    // Values are O(20); propagation combines O(10) of them with weights of size up to the
+    // triangulations' aspect ratios (< 100 here), so round-off stays below 1e-10.
+    const TS::C1_certificate c = certify(spline);
+    EXPECT_FALSE(c.exact);
+    EXPECT_LT(c.max_residual, 1e-10) << name;
+    EXPECT_EQ(c.failed_edges, c.interior_edges - std::count_if(c.edges.begin(), c.edges.end(),
+                                                               [](const auto& e) { return e.c1; }));
+  }
+}
+
+TEST(Spline, FreeCountEqualsExactRankAndMorganScott) {
+  using K = Exact_kernel;
+  for (const auto& [name, domain] : all_domains<K>()) {
+    C1_quintic_spline<K> spline(domain);
+    const std::size_t free = spline.number_of_free_parameters();
+    EXPECT_EQ(free, TS::free_parameter_count(domain)) << name;
+    EXPECT_EQ(free, TS::exact_spline_dimension(domain)) << name;
+    const auto ms = TS::morgan_scott_dimension(domain);
+    if (name == "L with hole") {
+      EXPECT_FALSE(ms.has_value());
+    } else {
+      ASSERT_TRUE(ms.has_value()) << name;
+      EXPECT_EQ(static_cast<long long>(free), *ms) << name;
+    }
+    // The perturbed domain has no singular vertex: the generic count, again equal to the rank.
+    std::vector<TS::Vertex_move<K::Point_2, Index>> moves;
+    const Planar_domain<K> moved = TS::perturb_degenerate_vertices(domain, moves);
+    EXPECT_EQ(C1_quintic_spline<K>(moved).number_of_free_parameters(),
+              TS::exact_spline_dimension(moved))
+        << name;
+  }
+  // The criss-cross grid: every cell centre is singular (degree 4, edges on two lines).
+  const auto criss_cross = grid<K>(3, true);
+  const C1_quintic_spline<K> spline(criss_cross);
+  EXPECT_EQ(spline.singular_vertices().size(), 9u);
+  const std::size_t generic =
+      3 * criss_cross.number_of_vertices() + 3 * criss_cross.number_of_faces() +
+      criss_cross.number_of_interior_edges() + 3 * criss_cross.number_of_boundary_edges();
+  EXPECT_EQ(spline.number_of_free_parameters(), generic + 9);
+  // A degree-4 fan on two lines: one singular vertex, every spoke degenerate at the centre.
+  const C1_quintic_spline<K> cross(fan<K>(2));
+  EXPECT_EQ(cross.singular_vertices().size(), 1u);
+  EXPECT_EQ(cross.degenerate_frames().size(), 4u);
+}
+
+TEST(Spline, StraightBoundaryVertexWithOneInteriorEdgeIsDegenerate) {
+  using K = Exact_kernel;
+  // Three triangles on a straight bottom side: (1,0) has one interior edge to (1,1) whose
+  // apexes (0,0) and (2,0) are collinear with it.
+  std::vector<K::Point_2> p{{0, 0}, {1, 0}, {2, 0}, {1, 1}, {0, 2}, {2, 2}};
+  const Planar_domain<K> domain(p, {{{0, 1, 3}}, {{1, 2, 3}}, {{0, 3, 4}}, {{3, 2, 5}}});
+  const auto analysis = TS::find_degenerate_frames(domain);
+  ASSERT_EQ(analysis.frames.size(), 1u);
+  EXPECT_EQ(analysis.frames[0].vertex, 1u);
+  Random_rationals random(3);
+  C1_quintic_spline<K> spline(domain);
+  randomize(spline, random);
+  EXPECT_TRUE(certify(spline).certified);
+}
+
+TEST(Spline, LocalEditsStayInTheRingAndKeepC1) {
+  using K = Exact_kernel;
+  Random_rationals random(21);
+  for (const auto& [name, domain] : all_domains<K>()) {
+    C1_quintic_spline<K> spline(domain);
+    randomize(spline, random);
+    for (int trial = 0; trial < 25; ++trial) {
+      const auto& free = spline.free_slots();
+      const auto s = free[std::size_t(random.integer(0, int(free.size()) - 1))];
+      const std::vector<std::uint32_t> changed = spline.edit(s, random.rational<K::FT>());
+      ASSERT_FALSE(changed.empty());
+      EXPECT_EQ(changed.front(), s);
+      // The ring: faces incident to a vertex of the edited point's polar label.
+      std::set<std::uint32_t> allowed;
+      for (const auto& [v, m] : spline.polar_label(s)) {
+        const auto [fb, fe] = domain.star_faces(v);
+        for (auto f = fb; f != fe; ++f)
+          for (const auto& index : TS::multi_indices(5))
+            allowed.insert(spline.slot(*f, index));
+      }
+      for (auto c : changed)
+        EXPECT_TRUE(allowed.count(c)) << name << ": slot " << c << " outside the ring of " << s;
+      // The local update equals a full re-propagation, exactly.
+      C1_quintic_spline<K> full = spline;
+      full.propagate();
+      EXPECT_EQ(full.values(), spline.values()) << name;
+    }
+    EXPECT_TRUE(certify(spline).certified) << name;
+  }
+  // Editing a propagated slot is refused.
+  C1_quintic_spline<K> spline(grid<K>(2, false));
+  std::uint32_t dependent = 0;
+  while (spline.is_free(dependent))
+    ++dependent;
+  EXPECT_THROW(spline.edit(dependent, K::FT(1)), TS::Invalid_input);
+  EXPECT_THROW(spline.set_free_value(std::uint32_t(spline.number_of_slots()), K::FT(1)),
+               TS::Invalid_input);
+}
+
+TEST(Spline, InterpolationAndLinearPrecision) {
+  using K = Exact_kernel;
+  using FT = K::FT;
+  Random_rationals random(5);
+  for (const auto& [name, domain] : all_domains<K>()) {
+    std::vector<FT> data, linear;
+    for (const auto& p : domain.points()) {
+      data.push_back(random.rational<FT>());
+      linear.push_back(FT(3) * p.x() - FT(2) / FT(7) * p.y() + FT(5));
+    }
+    for (Fit fit : {Fit::Interpolate, Fit::Tangent_planes}) {
+      C1_quintic_spline<K> spline(domain, Corner_frame::Corner_and_two_stars);
+      TS::fit_vertex_data(spline, data, fit);
+      for (Index f = 0; f < domain.number_of_faces(); ++f)
+        for (int i = 0; i < 3; ++i) {
+          const Index v = domain.face(f)[std::size_t(i)];
+          EXPECT_EQ(spline.patch(f).evaluate(domain.point(v)), data[v]) << name;
+        }
+      EXPECT_TRUE(certify(spline).certified) << name;
+    }
+    for (Fit fit : {Fit::Approximate, Fit::Interpolate, Fit::Tangent_planes}) {
+      C1_quintic_spline<K> spline(domain, fit == Fit::Approximate
+                                              ? Corner_frame::Symmetric_stars
+                                              : Corner_frame::Corner_and_two_stars);
+      TS::fit_vertex_data(spline, linear, fit);
+      for (Index f = 0; f < domain.number_of_faces(); f += 3)
+        for (int t = 0; t < 3; ++t) {
+          const auto& v = domain.face(f);
+          const K::Point_2 x = CGAL::barycenter(domain.point(v[0]), FT(1 + t), domain.point(v[1]),
+                                                FT(2), domain.point(v[2]), FT(3 - t));
+          const FT expected = FT(3) * x.x() - FT(2) / FT(7) * x.y() + FT(5);
+          EXPECT_EQ(spline.patch(f).evaluate(x), expected) << name;
+        }
+    }
+  }
+}
+
+TEST(Spline, BadInputIsRejected) {
+  using K = Exact_kernel;
+  C1_quintic_spline<K> approximate(grid<K>(2, false));
+  std::vector<K::FT> data(approximate.domain().number_of_vertices(), K::FT(1));
+  EXPECT_THROW(TS::fit_vertex_data(approximate, data, Fit::Interpolate), TS::Invalid_input);
+  data.pop_back();
+  EXPECT_THROW(TS::fit_vertex_data(approximate, data, Fit::Approximate), TS::Invalid_input);
+  // Non-finite data (double kernel).
+  C1_quintic_spline<Epick> fast(grid<Epick>(2, false));
+  std::vector<double> bad(fast.domain().number_of_vertices(), 1.0);
+  bad[2] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(TS::fit_vertex_data(fast, bad, Fit::Approximate), TS::Invalid_input);
+}
+
+TEST(Continuity, FastC1CheckAgreesWithBlossomCheck) {
+  using K = Exact_kernel;
+  Random_rationals random(99);
+  const auto P = random.polynomial<K>(5);
+  const K::Point_2 p(0, 0), r(3, 1), s(1, 2), q(5, 4);
+  // Every rotation of A's vertex order: the checker must not assume A = (p, r, s).
+  for (const auto& A :
+       {P.to_bezier(5, p, r, s), P.to_bezier(5, r, s, p), P.to_bezier(5, s, p, r)}) {
+    auto B = P.to_bezier(5, r, q, s);
+    for (int trial = 0; trial < 4; ++trial) {
+      const auto slow = TS::check_join(A, B, 1);
+      const auto fast = TS::check_C1_join(A, B);
+      EXPECT_EQ(slow.achieved_order, fast.achieved_order);
+      ASSERT_EQ(slow.conditions.size(), fast.conditions.size());
+      for (std::size_t i = 0; i < slow.conditions.size(); ++i)
+        EXPECT_EQ(slow.conditions[i].residual, fast.conditions[i].residual);
+      // Break one more control point each time: row 1 first, then the edge.
+      // B is over (r, q, s): index[1] counts the apex q.
+      const TS::Multi_index at = trial < 2 ? TS::Multi_index{2 + trial, 1, 2 - trial}
+                                           : TS::Multi_index{trial, 0, 5 - trial};
+      B.set_control_point(at, B.control_point(at) + K::FT(trial + 1) / K::FT(3));
+    }
+  }
+}
+
+TEST(Spline, DecimalCollinearityIsHandledInDouble) {
+  // r = (0.3, 0.7) lies exactly on the segment from p = (0,0) to q = (3,7) in decimal, but
+  // not after rounding to double. Exactly: a degenerate frame. In double: a numerically
+  // degenerate frame, re-routed instead of solved with a weight of ~1e16.
+  auto build = [](auto kernel_tag) {
+    using K = decltype(kernel_tag);
+    using FT = typename K::FT;
+    const FT r_x = FT(3) / FT(10), r_y = FT(7) / FT(10);
+    std::vector<typename K::Point_2> p{{0, 0}, {3, 7}, {r_x, r_y}, {3, -1}, {-2, 4}};
+    return Planar_domain<K>(p, {{{0, 3, 2}}, {{2, 3, 1}}, {{0, 2, 4}}, {{2, 1, 4}}});
+  };
+  const auto exact_frames = TS::find_degenerate_frames(build(Exact_kernel())).frames;
+  ASSERT_EQ(exact_frames.size(), 2u);
+  for (const auto& f : exact_frames)
+    EXPECT_FALSE(f.numerical);
+  const auto domain = build(Epick());
+  const auto double_frames = TS::find_degenerate_frames(domain).frames;
+  ASSERT_EQ(double_frames.size(), 2u);
+  C1_quintic_spline<Epick> spline(domain);
+  Random_rationals random(8);
+  randomize(spline, random);
+  double largest = 0;
+  for (double v : spline.values())
+    largest = (std::max)(largest, std::abs(v));
+  // Values stay at the data's scale (20 * small weights), and the C^1 defect is round-off
+  // plus the re-routing's neglected weight (< 1e-12 relative).
+  EXPECT_LT(largest, 1e4);
+  EXPECT_LT(certify(spline).max_residual, 1e-9 * largest);
+}
