@@ -27,10 +27,6 @@ int run_render(const std::vector<std::string>& args);
 // The one-line summary of a subcommand from the dispatch table (empty if unknown).
 std::string_view command_summary(std::string_view name);
 
-// The library showcase run by `tspline demo` (core_showcase.cpp): writes its
-// report to `out` and its files into `dir` (which exists); returns an exit status.
-int run_core_showcase(std::ostream& out, const std::filesystem::path& dir);
-
 } // namespace tspline
 
 #endif // TSPLINE_COMMANDS_H

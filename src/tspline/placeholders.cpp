@@ -29,12 +29,6 @@ int not_implemented(const std::string& command, int issue, const std::vector<std
 
 } // namespace
 
-int run_c1(const std::vector<std::string>& args) {
-  return not_implemented("c1", 3, args);
-}
-int run_certify(const std::vector<std::string>& args) {
-  return not_implemented("certify", 3, args);
-}
 int run_pseudo_ag1(const std::vector<std::string>& args) {
   return not_implemented("pseudo-ag1", 3, args);
 }

@@ -332,6 +332,8 @@ public:
   /// dependent slot once, in plan order (corners, edges, flips); returns the edited and
   /// recomputed slots.
   std::vector<Slot> edit(const std::vector<std::pair<Slot, Value>>& changes) {
+    if (m_dependent_offsets.empty())
+      build_dependents();
     std::vector<Slot> changed;
     std::vector<std::size_t> heap; // rule positions, smallest first
     auto enqueue_dependents = [&](Slot x) {
@@ -644,10 +646,10 @@ private:
     for (Slot s = 0; s < m_free.size(); ++s)
       if (m_free[s])
         m_free_slots.push_back(s);
-    build_dependents();
   }
 
-  // Reverse dependencies (slot -> rules reading it) for local edits.
+  // Reverse dependencies (slot -> rules reading it), built on the first local edit: a
+  // spline that is only propagated never pays for them.
   void build_dependents() {
     m_dependent_offsets.assign(m_values.size() + 1, 0);
     for (const Rule& r : m_rules)

@@ -86,16 +86,18 @@ Surface_derivatives surface_derivatives(const Bezier_triangle<GeomTraits, Value>
 
 /*!
   \ingroup PkgTriangularSplineCore
-  \brief returns the unit normal, Gaussian and mean curvature of the surface of `patch` at
-  `a`, from the exact first and second derivatives (square roots are taken in `double`).
+  \brief returns the unit normal, Gaussian and mean curvature from first and second
+  derivatives (`double`).
+
+  \f$EG - F^2\f$ is computed as \f$|F_x \times F_y|^2\f$, the same quantity without the
+  cancellation of \f$EG - F^2\f$ on steep surfaces (where \f$E G\f$ and \f$F^2\f$ are both
+  of size \f$|\nabla F|^4\f$).
 */
-template <class GeomTraits, class Value>
-Surface_curvature surface_curvature(const Bezier_triangle<GeomTraits, Value>& patch,
-                                    const typename GeomTraits::Point_2& a) {
-  const Surface_derivatives d = surface_derivatives(patch, a);
+inline Surface_curvature surface_curvature(const Surface_derivatives& d) {
   Surface_curvature result;
   const std::array<double, 3> n = internal::cross(d.fx, d.fy);
-  const double length = std::sqrt(internal::dot(n, n));
+  const double first = internal::dot(n, n);
+  const double length = std::sqrt(first);
   if (!(length > 0)) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     result.normal = {{0, 0, 0}};
@@ -108,10 +110,20 @@ Surface_curvature surface_curvature(const Bezier_triangle<GeomTraits, Value>& pa
                G = internal::dot(d.fy, d.fy);
   const double L = internal::dot(d.fxx, result.normal), M = internal::dot(d.fxy, result.normal),
                N = internal::dot(d.fyy, result.normal);
-  const double first = E * G - F * F;
   result.gaussian = (L * N - M * M) / first;
   result.mean = (E * N - 2 * F * M + G * L) / (2 * first);
   return result;
+}
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief returns the unit normal, Gaussian and mean curvature of the surface of `patch` at
+  `a`, from the exact first and second derivatives (square roots are taken in `double`).
+*/
+template <class GeomTraits, class Value>
+Surface_curvature surface_curvature(const Bezier_triangle<GeomTraits, Value>& patch,
+                                    const typename GeomTraits::Point_2& a) {
+  return surface_curvature(surface_derivatives(patch, a));
 }
 
 /*!

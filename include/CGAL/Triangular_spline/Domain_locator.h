@@ -1,0 +1,285 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_DOMAIN_LOCATOR_H
+#define CGAL_TRIANGULAR_SPLINE_DOMAIN_LOCATOR_H
+
+#include <CGAL/Triangular_spline/Planar_domain.h>
+
+#include <CGAL/Exact_rational.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief locates points of the plane in the triangles of a `Planar_domain`.
+
+  The bounding box of the domain is cut into a uniform grid of buckets, about one bucket
+  per two triangles, and every triangle is registered in each bucket that its bounding box
+  overlaps. Bounding boxes are computed in `double` with `CGAL::to_double()`, which is
+  exact for `double` and monotone for `CGAL::Exact_rational`, so a point of a triangle
+  always falls in one of the triangle's buckets; for other number types (e.g. the lazy
+  numbers of `CGAL::Exact_predicates_exact_constructions_kernel`) the boxes are widened by
+  a small relative margin. Only the choice of candidates uses `double`: whether a point
+  lies in a triangle is decided by the kernel's `Orientation_2` predicate, which is exact
+  for `CGAL::Exact_predicates_inexact_constructions_kernel` and for exact kernels.
+
+  Points on an edge or at a vertex belong to one of the incident triangles (the first
+  candidate found); points outside the domain, inside a hole, or with a non-finite
+  coordinate have no location.
+
+  <b>Complexity.</b> Construction takes \f$O(F + B)\f$ time and memory for \f$F\f$
+  triangles and \f$B \approx F/2\f$ buckets, plus the bucket entries, which are
+  \f$O(F)\f$ when the triangles have comparable sizes. If long thin triangles (a fan, a
+  strip) would register in too many buckets, the grid is coarsened until the entries are at
+  most about \f$8F\f$, so memory stays linear. A query inspects the triangles of one
+  bucket: \f$O(1)\f$ expected for evenly sized triangles, \f$O(F)\f$ in the worst case of
+  a very uneven triangulation.
+
+  The locator keeps a reference to the domain, which must outlive it and not change.
+
+  \tparam GeomTraits a model of `Kernel`, the kernel of the domain
+*/
+template <class GeomTraits>
+class Domain_locator {
+public:
+  /// \name Types
+  /// @{
+  using Geom_traits = GeomTraits;
+  using FT = typename Geom_traits::FT;
+  using Point_2 = typename Geom_traits::Point_2;
+  using Domain = Planar_domain<Geom_traits>;
+  using Index = typename Domain::Index;
+
+  /// where a point lies: a triangle of the domain and the barycentric coordinates of the
+  /// point with respect to the triangle's vertices in `Planar_domain::face()` order.
+  struct Location {
+    /// the triangle containing the point (in its interior or on its border)
+    Index face;
+    /// barycentric coordinates, non-negative and summing to one; a coordinate is exactly
+    /// zero when the point lies on the line of the opposite edge (exact predicate), so
+    /// vertices get exactly `(1, 0, 0)` up to order. With an exact `FT` they are exact;
+    /// with `double` they are rounded.
+    std::array<FT, 3> barycentric;
+  };
+  /// @}
+
+  /// \name Creation
+  /// @{
+
+  /// builds the bucket grid of `domain` (see the class description for the cost).
+  explicit Domain_locator(const Domain& domain) : m_domain(domain) { build(); }
+
+  /// a locator over a temporary domain would dangle.
+  Domain_locator(const Domain&&) = delete;
+  /// @}
+
+  /// \name Queries
+  /// @{
+
+  /// returns the triangle containing `p` and the barycentric coordinates of `p` in it, or
+  /// `std::nullopt` if `p` is outside the domain (including holes) or not finite.
+  std::optional<Location> locate(const Point_2& p) const {
+    if (!CGAL::is_finite(p.x()) || !CGAL::is_finite(p.y()))
+      return std::nullopt;
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    // The grid box holds every rounded triangle box: a rounded point outside it is outside.
+    if (!(x >= m_xmin && x <= m_xmax && y >= m_ymin && y <= m_ymax))
+      return std::nullopt;
+    const std::size_t bucket = cell(x, y);
+    for (std::size_t i = m_offsets[bucket]; i < m_offsets[bucket + 1]; ++i) {
+      std::optional<Location> location = locate_in(m_entries[i], p);
+      if (location)
+        return location;
+    }
+    return std::nullopt;
+  }
+
+  /// returns `true` iff `p` lies in the closed domain.
+  bool contains(const Point_2& p) const { return locate(p).has_value(); }
+
+  /// returns the domain.
+  const Domain& domain() const { return m_domain; }
+  /// returns the number of buckets of the grid.
+  std::size_t number_of_buckets() const { return m_nx * m_ny; }
+  /// returns the number of (bucket, triangle) registrations.
+  std::size_t number_of_entries() const { return m_entries.size(); }
+  /// @}
+
+private:
+  struct Box {
+    double xmin, ymin, xmax, ymax;
+  };
+
+  // Inside-or-on test with exact orientations, then barycentric coordinates d_i / sum d_j
+  // where d_i is twice the signed area of (p, opposite edge): exact for exact FT, and for
+  // double each coordinate is in [0, 1] and a vertex gets exactly 1.
+  std::optional<Location> locate_in(Index f, const Point_2& p) const {
+    const std::array<Index, 3>& t = m_domain.face(f);
+    const Point_2& a = m_domain.point(t[0]);
+    const Point_2& b = m_domain.point(t[1]);
+    const Point_2& c = m_domain.point(t[2]);
+    const auto orientation = m_domain.geom_traits().orientation_2_object();
+    // the face is counter-clockwise: p is inside or on iff it is on no edge's right side
+    const CGAL::Orientation o0 = orientation(b, c, p);
+    if (o0 == CGAL::RIGHT_TURN)
+      return std::nullopt;
+    const CGAL::Orientation o1 = orientation(c, a, p);
+    if (o1 == CGAL::RIGHT_TURN)
+      return std::nullopt;
+    const CGAL::Orientation o2 = orientation(a, b, p);
+    if (o2 == CGAL::RIGHT_TURN)
+      return std::nullopt;
+    const std::array<FT, 3> d{{o0 == CGAL::COLLINEAR ? FT(0) : area2(b, c, p),
+                               o1 == CGAL::COLLINEAR ? FT(0) : area2(c, a, p),
+                               o2 == CGAL::COLLINEAR ? FT(0) : area2(a, b, p)}};
+    const FT sum = d[0] + d[1] + d[2];
+    Location location{f, {{FT(0), FT(0), FT(0)}}};
+    for (std::size_t i = 0; i < 3; ++i) {
+      // rounding may make a positive area negative for a point almost on an edge
+      if (d[i] > FT(0))
+        location.barycentric[i] = d[i] / sum;
+    }
+    return location;
+  }
+
+  static FT area2(const Point_2& a, const Point_2& b, const Point_2& c) {
+    const FT area = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+    return area;
+  }
+
+  Box face_box(Index f) const {
+    Box box{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (Index v : m_domain.face(f)) {
+      const double x = CGAL::to_double(m_domain.point(v).x());
+      const double y = CGAL::to_double(m_domain.point(v).y());
+      box.xmin = (std::min)(box.xmin, x);
+      box.xmax = (std::max)(box.xmax, x);
+      box.ymin = (std::min)(box.ymin, y);
+      box.ymax = (std::max)(box.ymax, y);
+    }
+    return box;
+  }
+
+  std::size_t column(double x) const {
+    const double c = std::floor((x - m_xmin) * m_inverse_width);
+    if (!(c > 0))
+      return 0;
+    return (std::min)(static_cast<std::size_t>(c), m_nx - 1);
+  }
+  std::size_t row(double y) const {
+    const double r = std::floor((y - m_ymin) * m_inverse_height);
+    if (!(r > 0))
+      return 0;
+    return (std::min)(static_cast<std::size_t>(r), m_ny - 1);
+  }
+  std::size_t cell(double x, double y) const { return row(y) * m_nx + column(x); }
+
+  void set_grid(std::size_t nx, std::size_t ny) {
+    m_nx = (std::max)(nx, std::size_t(1));
+    m_ny = (std::max)(ny, std::size_t(1));
+    m_inverse_width = double(m_nx) / (m_xmax - m_xmin);
+    m_inverse_height = double(m_ny) / (m_ymax - m_ymin);
+  }
+
+  std::size_t count_entries(const std::vector<Box>& boxes) const {
+    std::size_t total = 0;
+    for (const Box& b : boxes)
+      total += (column(b.xmax) - column(b.xmin) + 1) * (row(b.ymax) - row(b.ymin) + 1);
+    return total;
+  }
+
+  void build() {
+    const std::size_t faces = m_domain.number_of_faces();
+    std::vector<Box> boxes(faces);
+    m_xmin = m_ymin = HUGE_VAL;
+    m_xmax = m_ymax = -HUGE_VAL;
+    for (std::size_t f = 0; f < faces; ++f) {
+      boxes[f] = face_box(static_cast<Index>(f));
+      m_xmin = (std::min)(m_xmin, boxes[f].xmin);
+      m_xmax = (std::max)(m_xmax, boxes[f].xmax);
+      m_ymin = (std::min)(m_ymin, boxes[f].ymin);
+      m_ymax = (std::max)(m_ymax, boxes[f].ymax);
+    }
+    // If to_double is monotone (exact for double, truncation for Exact_rational), a point
+    // in a triangle rounds into the rounded box of the triangle and the bucket computation
+    // (monotone too) finds it: no widening. Otherwise (e.g. lazy numbers, whose to_double
+    // is the midpoint of an interval) widen every box by far more than the rounding, so
+    // that a triangle containing a query is registered in the bucket of the rounded query.
+    // Widening registers the triangles of an axis-aligned grid in the neighbouring buckets
+    // too, which costs a factor of about 3 in entries and query time.
+    constexpr bool monotone =
+        std::is_floating_point<FT>::value || std::is_same<FT, CGAL::Exact_rational>::value;
+    const double size = (std::max)(m_xmax - m_xmin, m_ymax - m_ymin);
+    const double largest =
+        (std::max)({std::abs(m_xmin), std::abs(m_xmax), std::abs(m_ymin), std::abs(m_ymax)});
+    const double margin =
+        monotone ? 0.0 : size * 1e-12 + largest * 1e-13 + (std::numeric_limits<double>::min)();
+    for (Box& b : boxes) {
+      b.xmin -= margin;
+      b.ymin -= margin;
+      b.xmax += margin;
+      b.ymax += margin;
+    }
+    m_xmin -= margin;
+    m_ymin -= margin;
+    m_xmax += margin;
+    m_ymax += margin;
+
+    // About two triangles per bucket, cells roughly square. (Rounding to double may flatten
+    // the box of a tiny exact domain: then one row or column, and column() and row() map
+    // the NaN of 0 * infinity to 0.)
+    const double width = (std::max)(m_xmax - m_xmin, (std::numeric_limits<double>::min)());
+    const double height = (std::max)(m_ymax - m_ymin, (std::numeric_limits<double>::min)());
+    const double buckets = (std::max)(1.0, double(faces) / 2);
+    double nx = std::sqrt(buckets * width / height);
+    double ny = std::sqrt(buckets * height / width);
+    nx = (std::min)((std::max)(1.0, std::round(nx)), buckets);
+    ny = (std::min)((std::max)(1.0, std::round(ny)), buckets);
+    set_grid(static_cast<std::size_t>(nx), static_cast<std::size_t>(ny));
+    // Long thin triangles cover many buckets: coarsen until the entries stay linear.
+    const std::size_t limit = 8 * faces + 16;
+    while (m_nx * m_ny > 1 && count_entries(boxes) > limit)
+      set_grid(m_nx / 2, m_ny / 2);
+
+    // Two passes (count, fill) into flat arrays: no per-bucket allocation.
+    m_offsets.assign(m_nx * m_ny + 1, 0);
+    for (const Box& b : boxes)
+      for (std::size_t r = row(b.ymin), r1 = row(b.ymax); r <= r1; ++r)
+        for (std::size_t c = column(b.xmin), c1 = column(b.xmax); c <= c1; ++c)
+          ++m_offsets[r * m_nx + c + 1];
+    for (std::size_t i = 1; i < m_offsets.size(); ++i)
+      m_offsets[i] += m_offsets[i - 1];
+    m_entries.resize(m_offsets.back());
+    std::vector<std::size_t> fill(m_offsets.begin(), m_offsets.end() - 1);
+    for (std::size_t f = 0; f < faces; ++f) {
+      const Box& b = boxes[f];
+      for (std::size_t r = row(b.ymin), r1 = row(b.ymax); r <= r1; ++r)
+        for (std::size_t c = column(b.xmin), c1 = column(b.xmax); c <= c1; ++c)
+          m_entries[fill[r * m_nx + c]++] = static_cast<Index>(f);
+    }
+  }
+
+  const Domain& m_domain;
+  double m_xmin = 0, m_ymin = 0, m_xmax = 0, m_ymax = 0;
+  double m_inverse_width = 0, m_inverse_height = 0;
+  std::size_t m_nx = 1, m_ny = 1;
+  std::vector<std::size_t> m_offsets;
+  std::vector<Index> m_entries;
+};
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_DOMAIN_LOCATOR_H

@@ -1,0 +1,201 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_IO_SCATTERED_DATA_H
+#define CGAL_TRIANGULAR_SPLINE_IO_SCATTERED_DATA_H
+
+#include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_face_base_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <istream>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief scattered height data \f$(x_i, y_i, z_i)\f$: distinct points of the plane, not all
+  collinear, with one height each, as returned by `read_xyz()`.
+  \tparam GeomTraits a model of `Kernel`
+*/
+template <class GeomTraits>
+struct Scattered_data {
+  /// the points \f$(x_i, y_i)\f$
+  std::vector<typename GeomTraits::Point_2> points;
+  /// the heights \f$z_i\f$, one per point
+  std::vector<typename GeomTraits::FT> values;
+  /// the number of input lines dropped because they repeated an earlier line's point and
+  /// height
+  std::size_t merged_duplicates = 0;
+};
+
+namespace internal {
+
+// Splits `line` into whitespace-separated tokens after removing a `#` comment and a
+// carriage return (files written on Windows).
+inline std::vector<std::string> tokens_of_line(const std::string& line) {
+  std::string text = line.substr(0, line.find('#'));
+  if (!text.empty() && text.back() == '\r')
+    text.pop_back();
+  std::istringstream in(text);
+  std::vector<std::string> tokens;
+  for (std::string token; in >> token;)
+    tokens.push_back(token);
+  return tokens;
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief reads scattered height data, one point `x y z` per line.
+
+  Numbers are read with `parse_number<FT>()`, so with an exact kernel decimals are exact
+  (`0.1` is 1/10). Blank lines are skipped, and `#` starts a comment that runs to the end of
+  the line. Points with the same \f$(x,y)\f$ (exact comparison) and the same height are
+  merged into the first of them and counted in `merged_duplicates`.
+
+  \tparam GeomTraits a model of `Kernel`
+  \param input the stream to read
+  \param source the name used in error messages (usually the file name)
+  \throws Invalid_input whose message starts with `source:line` for a line without exactly
+  three numbers or with an invalid number (garbage, NaN, infinity, magnitude above
+  \f$10^{150}\f$), and names both lines for two points with the same \f$(x,y)\f$ and
+  different heights; also thrown if fewer than three distinct points remain or if all
+  points are collinear (no triangle can be built).
+*/
+template <class GeomTraits>
+Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& source) {
+  using FT = typename GeomTraits::FT;
+  using Point_2 = typename GeomTraits::Point_2;
+  std::vector<Point_2> points;
+  std::vector<FT> values;
+  std::vector<std::size_t> lines;
+  std::string line;
+  for (std::size_t number = 1; std::getline(input, line); ++number) {
+    const std::vector<std::string> tokens = internal::tokens_of_line(line);
+    if (tokens.empty())
+      continue;
+    const std::string where = source + ":" + std::to_string(number) + ": ";
+    if (tokens.size() != 3)
+      throw Invalid_input(where + "expected 3 numbers (x y z), found " +
+                          std::to_string(tokens.size()) + " fields");
+    FT c[3];
+    for (int i = 0; i < 3; ++i) {
+      try {
+        c[i] = parse_number<FT>(tokens[static_cast<std::size_t>(i)]);
+      } catch (const Invalid_input& e) {
+        throw Invalid_input(where + e.what());
+      }
+    }
+    points.emplace_back(c[0], c[1]);
+    values.push_back(c[2]);
+    lines.push_back(number);
+  }
+  if (input.bad())
+    throw Invalid_input(source + ": read error");
+
+  // Duplicates: sort exactly by (x, y), then compare neighbours; the first occurrence of
+  // each point is kept, in input order.
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  const auto less_xy = GeomTraits().less_xy_2_object();
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return less_xy(points[a], points[b]); });
+  std::vector<char> keep(points.size(), 1);
+  Scattered_data<GeomTraits> data;
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    const std::size_t first = order[i - 1], second = order[i];
+    if (points[first] != points[second])
+      continue;
+    if (values[first] != values[second])
+      throw Invalid_input(source + ":" + std::to_string(lines[first]) + " and " + source + ":" +
+                          std::to_string(lines[second]) + ": the same point " +
+                          internal::point_to_string(points[first]) + " has different heights " +
+                          format_number(values[first]) + " and " + format_number(values[second]));
+    keep[second] = 0;
+    order[i] = first; // later copies compare with the kept one
+    ++data.merged_duplicates;
+  }
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (keep[i]) {
+      data.points.push_back(points[i]);
+      data.values.push_back(values[i]);
+    }
+  const std::size_t n = data.points.size();
+  if (n < 3)
+    throw Invalid_input(source + ": " + std::to_string(n) + " distinct point" +
+                        (n == 1 ? "" : "s") + ", at least 3 are needed for a triangle");
+  const auto collinear = GeomTraits().collinear_2_object();
+  bool all_collinear = true;
+  for (std::size_t i = 2; i < n && all_collinear; ++i)
+    all_collinear = collinear(data.points[0], data.points[1], data.points[i]);
+  if (all_collinear)
+    throw Invalid_input(source + ": all " + std::to_string(n) +
+                        " points are collinear: no triangle");
+  return data;
+}
+
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief returns the Delaunay triangulation of the data points as a `Planar_domain`, with the
+  data value of each domain vertex.
+
+  The triangulation is `CGAL::Delaunay_triangulation_2` (for cocircular points CGAL's
+  deterministic choice); its domain is the convex hull of the points. Domain vertex `v` is
+  the input point carrying value `second[v]`; vertex indices follow CGAL's face order, not
+  the input order.
+  \tparam GeomTraits a model of `DelaunayTriangulationTraits_2` and `Kernel`
+  \throws Invalid_input if `points` and `values` differ in size, two points coincide, or all
+  points are collinear (data from `read_xyz()` passes these checks)
+*/
+template <class GeomTraits>
+std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
+delaunay_domain(const Scattered_data<GeomTraits>& data) {
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, GeomTraits>;
+  using Fb = CGAL::Triangulation_face_base_2<GeomTraits>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+  using Delaunay = CGAL::Delaunay_triangulation_2<GeomTraits, Tds>;
+  using FT = typename GeomTraits::FT;
+  if (data.points.size() != data.values.size())
+    throw Invalid_input("scattered data: " + std::to_string(data.points.size()) + " points but " +
+                        std::to_string(data.values.size()) + " values");
+  std::vector<std::pair<typename GeomTraits::Point_2, std::size_t>> indexed;
+  indexed.reserve(data.points.size());
+  for (std::size_t i = 0; i < data.points.size(); ++i)
+    indexed.emplace_back(data.points[i], i);
+  Delaunay triangulation(indexed.begin(), indexed.end());
+  if (triangulation.number_of_vertices() != data.points.size())
+    throw Invalid_input("scattered data: " +
+                        std::to_string(data.points.size() - triangulation.number_of_vertices()) +
+                        " points repeat an earlier point");
+  if (triangulation.dimension() < 2)
+    throw Invalid_input("scattered data: all " + std::to_string(data.points.size()) +
+                        " points are collinear: no triangle");
+  std::vector<typename Delaunay::Vertex_handle> handles;
+  Planar_domain<GeomTraits> domain = domain_from_triangulation_2<GeomTraits>(
+      triangulation, [](typename Delaunay::Face_handle) { return true; }, handles);
+  std::vector<FT> values;
+  values.reserve(handles.size());
+  for (const auto& h : handles)
+    values.push_back(data.values[h->info()]);
+  return {std::move(domain), std::move(values)};
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_IO_SCATTERED_DATA_H

@@ -1,0 +1,406 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_IO_SPLINE_FILE_H
+#define CGAL_TRIANGULAR_SPLINE_IO_SPLINE_FILE_H
+
+#include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/Multi_index.h>
+#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Value_traits.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/Exact_rational.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <istream>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief the contents of a spline file: the domain triangulation and one Bézier patch per
+  face, as returned by `read_spline_file()`.
+
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or `GeomTraits::Vector_3` (parametric)
+*/
+template <class GeomTraits, class Value = typename GeomTraits::FT>
+struct Spline_file {
+  /// the domain; its faces are the file's faces, reoriented counter-clockwise if needed
+  Planar_domain<GeomTraits> domain;
+  /// `patches[f]` is the patch of face `f`, over the face's vertices in the file's order
+  /// (which may differ from `domain.face(f)` by the reorientation)
+  std::vector<Bezier_triangle<GeomTraits, Value>> patches;
+};
+
+namespace internal {
+
+constexpr const char* spline_file_magic = "tspline-spline";
+constexpr int spline_file_version = 1;
+// Keeps a corrupt count from reserving gigabytes before the file runs out.
+constexpr std::size_t spline_file_reserve_limit = std::size_t(1) << 20;
+
+// Reads the non-blank, non-comment lines of a spline file as tokens, counting lines.
+class Spline_line_reader {
+public:
+  Spline_line_reader(std::istream& input, const std::string& source)
+      : m_input(input), m_source(source) {}
+
+  // Returns false at the end of the input.
+  bool next(std::vector<std::string>& tokens) {
+    std::string line;
+    while (std::getline(m_input, line)) {
+      ++m_line;
+      if (!line.empty() && line.back() == '\r')
+        line.pop_back();
+      const std::size_t first = line.find_first_not_of(" \t");
+      if (first == std::string::npos || line[first] == '#')
+        continue;
+      std::istringstream in(line);
+      tokens.clear();
+      m_text = line.substr(first);
+      for (std::string token; in >> token;)
+        tokens.push_back(token);
+      return true;
+    }
+    if (m_input.bad())
+      fail("read error");
+    return false;
+  }
+
+  // Reads the next line, which must exist; `expected` describes it for the error message.
+  std::vector<std::string> expect(const std::string& expected) {
+    std::vector<std::string> tokens;
+    if (!next(tokens))
+      fail("unexpected end of file, expected " + expected);
+    return tokens;
+  }
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw Invalid_input(m_source + ":" + std::to_string(m_line) + ": " + message);
+  }
+
+  // The current line, for messages (trimmed, at most 60 characters).
+  std::string text() const {
+    return "\"" + (m_text.size() > 60 ? m_text.substr(0, 57) + "..." : m_text) + "\"";
+  }
+
+  // Reads a data line of `size` tokens; `what` describes it ("2 numbers (x y) for vertex
+  // 3 of 5"). A section keyword in its place means that a count was wrong: say so.
+  std::vector<std::string> data_line(const std::string& what, std::size_t size) {
+    std::vector<std::string> tokens = expect(what);
+    static const char* const keywords[] = {"degree", "dimension", "number_type", "vertices",
+                                           "faces",  "patches",   "end"};
+    const bool keyword =
+        std::find(std::begin(keywords), std::end(keywords), tokens[0]) != std::end(keywords);
+    if (keyword || tokens.size() != size)
+      fail("expected " + what + ", found " + text());
+    return tokens;
+  }
+
+  // Reads "keyword value"; returns the value token.
+  std::string keyword_value(const std::string& keyword) {
+    const std::vector<std::string> tokens = expect("\"" + keyword + " ...\"");
+    if (tokens[0] != keyword)
+      fail("expected \"" + keyword + " ...\", found " + text());
+    if (tokens.size() != 2)
+      fail("expected one value after \"" + keyword + "\", found " + text());
+    return tokens[1];
+  }
+
+  void keyword(const std::string& keyword) {
+    const std::vector<std::string> tokens = expect("\"" + keyword + "\"");
+    if (tokens.size() != 1 || tokens[0] != keyword)
+      fail("expected \"" + keyword + "\", found " + text());
+  }
+
+  // A non-negative decimal integer no larger than `max`.
+  std::size_t count(const std::string& token, const std::string& what, std::size_t max) const {
+    if (token.empty() || token.find_first_not_of("0123456789") != std::string::npos)
+      fail("invalid " + what + " \"" + token + "\" (expected a non-negative integer)");
+    // Twelve digits exceed every `max`; stoull cannot overflow below that.
+    if (token.size() > 12 || static_cast<std::size_t>(std::stoull(token)) > max)
+      fail(what + " " + token + " is out of range (at most " + std::to_string(max) + ")");
+    return static_cast<std::size_t>(std::stoull(token));
+  }
+
+  template <class FT>
+  FT number(const std::string& token, bool exact_file) const {
+    try {
+      if (!exact_file)
+        return FT(parse_double(token)); // exact conversion for an exact FT
+      if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value)
+        return parse_number<FT>(token);
+      else
+        return FT(nearest_double(parse_number<CGAL::Exact_rational>(token)));
+    } catch (const Invalid_input& e) {
+      fail(e.what());
+    }
+  }
+
+private:
+  std::istream& m_input;
+  std::string m_source;
+  std::size_t m_line = 0;
+  std::string m_text;
+};
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief writes a spline, given as a domain and one Bézier patch per face, in the
+  `tspline-spline` text format (version 1).
+
+  The format is line-based; blank lines and lines starting with `#` (after optional
+  blanks) may appear anywhere, and tokens are separated by blanks:
+  \code
+  tspline-spline 1
+  degree m
+  dimension d            1: functional (heights), 3: parametric (points x y z)
+  number_type exact      or double
+  vertices N
+  x y                    N lines: the domain vertices 0..N-1
+  faces F
+  a b c                  F lines: vertex indices (0-based) of the domain triangles
+  patches
+  v_0 ... v_{n-1}        F lines, one per face, in the order of the faces
+  end
+  \endcode
+  Patch line `f` holds the \f$n = (m+1)(m+2)/2\f$ control values of face `f` over its
+  vertices in the order `(a, b, c)` written on the face line, in Xu's Table 2.3 order:
+  \f$b_{i,j,k}\f$ is the blossom value \f$f(a^i b^j c^k)\f$, listed by rows \f$i = 0..m\f$, within
+  a row \f$j = 0..m-i\f$ (see `linear_index()`). A value of dimension 3 is 3 numbers.
+
+  With `number_type exact` every number is an integer `p`, a fraction `p/q` or an exact
+  decimal (`0.1` means 1/10); with `number_type double` every number is a decimal, and
+  `%.17g` (which this writer uses) round-trips every `double`. Numbers are written by
+  `format_number()`: reduced fractions for an exact `FT` (nothing is lost), `%.17g` for
+  `double`.
+
+  \tparam GeomTraits a model of `Kernel` whose `FT` is `double` or exact
+  \tparam Value `GeomTraits::FT` (dimension 1) or `GeomTraits::Vector_3` (dimension 3)
+  \param output the stream to write to
+  \param domain the domain triangulation
+  \param patches_by_face `patches_by_face[f]` is the patch over face `f`: its three vertices
+  must be those of `domain.face(f)`, in any order; the face line records the patch's order.
+  \throws Invalid_input if the number of patches differs from the number of faces, the
+  degrees differ, or a patch is not over the vertices of its face
+  \throws std::runtime_error if the stream fails
+*/
+template <class GeomTraits, class Value>
+void write_spline_file(std::ostream& output, const Planar_domain<GeomTraits>& domain,
+                       const std::vector<Bezier_triangle<GeomTraits, Value>>& patches_by_face) {
+  using FT = typename GeomTraits::FT;
+  using Index = typename Planar_domain<GeomTraits>::Index;
+  using Traits = Value_traits<Value>;
+  static_assert(Traits::dimension == 1 || Traits::dimension == 3,
+                "the spline file format holds dimension 1 or 3 control values");
+  const std::size_t F = domain.number_of_faces();
+  if (patches_by_face.size() != F)
+    throw Invalid_input("write_spline_file: " + std::to_string(patches_by_face.size()) +
+                        " patches for " + std::to_string(F) + " faces");
+  const int m = patches_by_face.front().degree();
+  // The patch's vertex order, as domain vertex indices (exact point comparison).
+  std::vector<std::array<Index, 3>> ordered(F);
+  for (std::size_t f = 0; f < F; ++f) {
+    const Bezier_triangle<GeomTraits, Value>& patch = patches_by_face[f];
+    if (patch.degree() != m)
+      throw Invalid_input("write_spline_file: patch " + std::to_string(f) + " has degree " +
+                          std::to_string(patch.degree()) + ", patch 0 has degree " +
+                          std::to_string(m));
+    const std::array<Index, 3>& face = domain.face(static_cast<Index>(f));
+    std::array<bool, 3> used{{false, false, false}};
+    for (int i = 0; i < 3; ++i) {
+      int match = -1;
+      for (int j = 0; j < 3 && match < 0; ++j)
+        if (!used[static_cast<std::size_t>(j)] &&
+            domain.point(face[static_cast<std::size_t>(j)]) == patch.vertex(i))
+          match = j;
+      if (match < 0)
+        throw Invalid_input("write_spline_file: patch " + std::to_string(f) + " vertex " +
+                            std::to_string(i) + " " + internal::point_to_string(patch.vertex(i)) +
+                            " is not a vertex of face " + std::to_string(f));
+      used[static_cast<std::size_t>(match)] = true;
+      ordered[f][static_cast<std::size_t>(i)] = face[static_cast<std::size_t>(match)];
+    }
+  }
+
+  const bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
+  output << internal::spline_file_magic << " " << internal::spline_file_version << "\n"
+         << "# a piecewise polynomial over a planar triangulation, written by "
+            "CGAL::Triangular_spline\n"
+         << "degree " << m << "\n"
+         << "dimension " << Traits::dimension << "\n"
+         << "number_type " << (exact ? "exact" : "double") << "\n"
+         << "vertices " << domain.number_of_vertices() << "\n";
+  for (const auto& p : domain.points())
+    output << format_number(p.x()) << " " << format_number(p.y()) << "\n";
+  output << "faces " << F << "\n";
+  for (const auto& t : ordered)
+    output << t[0] << " " << t[1] << " " << t[2] << "\n";
+  output << "patches\n";
+  for (const auto& patch : patches_by_face) {
+    bool first = true;
+    for (const Value& v : patch.control_points())
+      for (int c = 0; c < Traits::dimension; ++c) {
+        if (!first)
+          output << " ";
+        first = false;
+        output << format_number<FT>(Traits::coordinate(v, c));
+      }
+    output << "\n";
+  }
+  output << "end\n";
+  if (!output)
+    throw std::runtime_error("write_spline_file: the output stream failed");
+}
+
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief reads a spline in the `tspline-spline` text format (see `write_spline_file()`).
+
+  Parsing is strict: the sections must come in the documented order, each with the
+  announced number of lines and of numbers per line, and nothing but comments may follow
+  `end`. Numbers are converted as follows:
+  - `exact` file, exact `FT`: exactly (`parse_number()`);
+  - `exact` file, `double`: the exact value rounded to the nearest `double`;
+  - `double` file, either `FT`: `std::strtod`, then converted exactly into `FT`.
+
+  \tparam GeomTraits a model of `Kernel` whose `FT` is `double` or exact
+  \tparam Value `GeomTraits::FT` (reads dimension 1 files) or `GeomTraits::Vector_3`
+  (reads dimension 3 files)
+  \param input the stream to read
+  \param source the name used in error messages (usually the file name)
+  \return the domain and the patches; `patches[f]` is over the vertices of face `f` in the
+  file's order
+  \throws Invalid_input whose message starts with `source:line` for a bad first line
+  (not a spline file, or an unsupported version), a missing or misplaced section, a count
+  that does not match, a dimension that differs from `Value`'s, an invalid number, a vertex
+  index out of range, or anything after `end`; the `Planar_domain` checks apply to the
+  vertices and faces and their messages are prefixed with `source`.
+*/
+template <class GeomTraits, class Value = typename GeomTraits::FT>
+Spline_file<GeomTraits, Value> read_spline_file(std::istream& input, const std::string& source) {
+  using FT = typename GeomTraits::FT;
+  using Point_2 = typename GeomTraits::Point_2;
+  using Index = typename Planar_domain<GeomTraits>::Index;
+  constexpr int dimension = Value_traits<Value>::dimension;
+  static_assert(dimension == 1 || dimension == 3,
+                "the spline file format holds dimension 1 or 3 control values");
+  internal::Spline_line_reader reader(input, source);
+
+  std::vector<std::string> tokens =
+      reader.expect("\"" + std::string(internal::spline_file_magic) + " 1\"");
+  if (tokens[0] != internal::spline_file_magic || tokens.size() != 2)
+    reader.fail("not a tspline spline file (expected \"" +
+                std::string(internal::spline_file_magic) + " 1\", found " + reader.text() + ")");
+  if (tokens[1] != std::to_string(internal::spline_file_version))
+    reader.fail("unsupported version " + tokens[1] + " (this reader supports version " +
+                std::to_string(internal::spline_file_version) + ")");
+
+  const int m = static_cast<int>(reader.count(reader.keyword_value("degree"), "degree", 100));
+  const std::size_t values_per_patch = number_of_control_points(m);
+  const std::string dimension_token = reader.keyword_value("dimension");
+  if (dimension_token != "1" && dimension_token != "3")
+    reader.fail("invalid dimension \"" + dimension_token + "\" (expected 1 or 3)");
+  if (dimension_token != std::to_string(dimension))
+    reader.fail("the file holds dimension " + dimension_token + " control values (" +
+                (dimension_token == "1" ? "functional" : "parametric") + ") but dimension " +
+                std::to_string(dimension) + " values were requested");
+  const std::string number_type = reader.keyword_value("number_type");
+  if (number_type != "exact" && number_type != "double")
+    reader.fail("invalid number_type \"" + number_type + "\" (expected exact or double)");
+  const bool exact_file = number_type == "exact";
+
+  const std::size_t max_index = Planar_domain<GeomTraits>::null_index - 1;
+  const std::size_t N = reader.count(reader.keyword_value("vertices"), "vertex count", max_index);
+  std::vector<Point_2> points;
+  points.reserve((std::min)(N, internal::spline_file_reserve_limit));
+  for (std::size_t v = 0; v < N; ++v) {
+    tokens = reader.data_line(
+        "2 numbers (x y) for vertex " + std::to_string(v) + " of " + std::to_string(N), 2);
+    const FT x = reader.number<FT>(tokens[0], exact_file);
+    const FT y = reader.number<FT>(tokens[1], exact_file);
+    points.emplace_back(x, y);
+  }
+
+  const std::size_t F = reader.count(reader.keyword_value("faces"), "face count", max_index);
+  std::vector<std::array<Index, 3>> faces;
+  faces.reserve((std::min)(F, internal::spline_file_reserve_limit));
+  for (std::size_t f = 0; f < F; ++f) {
+    tokens = reader.data_line(
+        "3 vertex indices (a b c) for face " + std::to_string(f) + " of " + std::to_string(F), 3);
+    std::array<Index, 3> t;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::size_t v = reader.count(tokens[i], "vertex index", max_index);
+      if (v >= N)
+        reader.fail("face " + std::to_string(f) + " uses vertex " + tokens[i] +
+                    " but there are only " + std::to_string(N) + " vertices");
+      t[i] = static_cast<Index>(v);
+    }
+    faces.push_back(t);
+  }
+
+  reader.keyword("patches");
+  const std::size_t numbers_per_line = values_per_patch * static_cast<std::size_t>(dimension);
+  std::vector<std::vector<Value>> nets;
+  nets.reserve((std::min)(F, internal::spline_file_reserve_limit));
+  for (std::size_t f = 0; f < F; ++f) {
+    tokens = reader.data_line(
+        std::to_string(numbers_per_line) + " numbers (" + std::to_string(values_per_patch) +
+            " control values of dimension " + std::to_string(dimension) +
+            ") for the patch of face " + std::to_string(f) + " of " + std::to_string(F),
+        numbers_per_line);
+    std::vector<Value> net;
+    net.reserve(values_per_patch);
+    for (std::size_t c = 0; c < values_per_patch; ++c) {
+      if constexpr (dimension == 1) {
+        net.push_back(reader.number<FT>(tokens[c], exact_file));
+      } else {
+        const FT x = reader.number<FT>(tokens[3 * c], exact_file);
+        const FT y = reader.number<FT>(tokens[3 * c + 1], exact_file);
+        const FT z = reader.number<FT>(tokens[3 * c + 2], exact_file);
+        net.push_back(Value(x, y, z));
+      }
+    }
+    nets.push_back(std::move(net));
+  }
+  reader.keyword("end");
+  if (reader.next(tokens))
+    reader.fail("unexpected content after \"end\": " + reader.text());
+
+  // The patches use the file's vertex order; the domain may reorient its copy of the faces.
+  std::vector<std::array<Index, 3>> file_faces = faces;
+  try {
+    Planar_domain<GeomTraits> domain(std::move(points), std::move(faces));
+    std::vector<Bezier_triangle<GeomTraits, Value>> patches;
+    patches.reserve(F);
+    for (std::size_t f = 0; f < F; ++f) {
+      const std::array<Index, 3>& t = file_faces[f];
+      patches.emplace_back(m, domain.point(t[0]), domain.point(t[1]), domain.point(t[2]),
+                           std::move(nets[f]));
+    }
+    return Spline_file<GeomTraits, Value>{std::move(domain), std::move(patches)};
+  } catch (const Invalid_input& e) {
+    throw Invalid_input(source + ": " + e.what());
+  }
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_IO_SPLINE_FILE_H

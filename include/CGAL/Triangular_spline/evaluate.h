@@ -1,0 +1,209 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_EVALUATE_H
+#define CGAL_TRIANGULAR_SPLINE_EVALUATE_H
+
+#include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/Domain_locator.h>
+#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Value_traits.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <limits>
+#include <optional>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+namespace internal {
+
+// The patch type returned (by value or by reference) by a patch source.
+template <class PatchSource, class Index>
+using Patch_of =
+    std::remove_cv_t<std::remove_reference_t<std::invoke_result_t<PatchSource&, Index>>>;
+
+// Converts barycentric weights w.r.t. the vertices of a domain face (face(f) order) into
+// weights w.r.t. the vertices of the patch of that face, which may list the same three
+// points in another order. Matching is by exact point equality, so exact zeros and grid
+// weights carry over unchanged; if the patch is over another triangle, the point is
+// rebuilt and its coordinates are recomputed with respect to the patch.
+template <class GeomTraits, class Value>
+class Face_to_patch {
+public:
+  using FT = typename GeomTraits::FT;
+  using Point_2 = typename GeomTraits::Point_2;
+  using Weights = std::array<FT, 3>;
+
+  Face_to_patch(const Planar_domain<GeomTraits>& domain,
+                typename Planar_domain<GeomTraits>::Index f,
+                const Bezier_triangle<GeomTraits, Value>& patch)
+      : m_patch(patch) {
+    const auto& t = domain.face(f);
+    std::array<bool, 3> used{{false, false, false}};
+    for (std::size_t c = 0; c < 3; ++c) {
+      m_corners[c] = &domain.point(t[c]);
+      m_to_patch[c] = 3;
+      for (std::size_t v = 0; v < 3; ++v)
+        if (!used[v] && patch.vertex(static_cast<int>(v)) == *m_corners[c]) {
+          m_to_patch[c] = v;
+          used[v] = true;
+          break;
+        }
+      m_matched = m_matched && m_to_patch[c] < 3;
+    }
+  }
+
+  // returns the domain point with face weights `w`
+  Point_2 point(const Weights& w) const {
+    const FT x = w[0] * m_corners[0]->x() + w[1] * m_corners[1]->x() + w[2] * m_corners[2]->x();
+    const FT y = w[0] * m_corners[0]->y() + w[1] * m_corners[1]->y() + w[2] * m_corners[2]->y();
+    return Point_2(x, y);
+  }
+
+  // returns the weights of the same point w.r.t. the patch's vertices
+  Weights patch_weights(const Weights& w) const {
+    if (!m_matched)
+      return m_patch.barycentric_coordinates(point(w));
+    Weights result;
+    for (std::size_t c = 0; c < 3; ++c)
+      result[m_to_patch[c]] = w[c];
+    return result;
+  }
+
+  Value evaluate(const Weights& w) const { return m_patch.evaluate_barycentric(patch_weights(w)); }
+
+  bool matched() const { return m_matched; }
+
+private:
+  const Bezier_triangle<GeomTraits, Value>& m_patch;
+  std::array<const Point_2*, 3> m_corners;
+  std::array<std::size_t, 3> m_to_patch;
+  bool m_matched = true;
+};
+
+template <class GeomTraits, class PatchSource, class Callback>
+void for_each_location(const Planar_domain<GeomTraits>& domain,
+                       const Domain_locator<GeomTraits>& locator, PatchSource& patch,
+                       const std::vector<typename GeomTraits::Point_2>& queries,
+                       Callback callback) {
+  CGAL_precondition(&locator.domain() == &domain);
+  using Patch = Patch_of<PatchSource, typename Planar_domain<GeomTraits>::Index>;
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const auto location = locator.locate(queries[q]);
+    if (!location) {
+      callback(q, nullptr);
+      continue;
+    }
+    // binds to the source's reference, or extends the life of the returned patch
+    const Patch& bezier = patch(location->face);
+    const Face_to_patch<GeomTraits, typename Patch::Value_type> frame(domain, location->face,
+                                                                      bezier);
+    const typename Patch::Value_type value = frame.evaluate(location->barycentric);
+    callback(q, &value);
+  }
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief evaluates a functional (height) spline at query points.
+
+  Each query is located in the domain with `locator`; the patch of the triangle found is
+  evaluated by de Casteljau's algorithm at the point's barycentric coordinates with
+  respect to the patch's own vertices (the patch may list the triangle's vertices in any
+  order). Points on an edge or at a vertex are evaluated in one incident patch: for a
+  continuous spline every incident patch gives the same value.
+
+  \tparam GeomTraits a model of `Kernel`
+  \tparam PatchSource a callable with `patch(f)` returning (by value or by reference) the
+  `Bezier_triangle<GeomTraits, GeomTraits::FT>` of face `f` of `domain`, e.g. a lambda
+  calling the spline's `patch(f)`
+  \param domain the domain triangulation
+  \param locator a locator built on `domain`
+  \param patch the patch source
+  \param queries the query points
+  \return one value per query, in input order: the height converted to `double`
+  (computed exactly first when `FT` is exact), or a quiet NaN where the query is outside
+  the domain, in a hole, or not finite
+  \pre `locator` was built on `domain`
+*/
+template <class GeomTraits, class PatchSource>
+std::vector<double> evaluate_functional(const Planar_domain<GeomTraits>& domain,
+                                        const Domain_locator<GeomTraits>& locator,
+                                        PatchSource patch,
+                                        const std::vector<typename GeomTraits::Point_2>& queries) {
+  using Patch = internal::Patch_of<PatchSource, typename Planar_domain<GeomTraits>::Index>;
+  using Value = typename Patch::Value_type;
+  static_assert(Value_traits<Value>::dimension == 1,
+                "evaluate_functional() needs functional (scalar) patches; use evaluate_at()");
+  std::vector<double> values(queries.size(), std::numeric_limits<double>::quiet_NaN());
+  internal::for_each_location(domain, locator, patch, queries,
+                              [&](std::size_t q, const Value* value) {
+                                if (value)
+                                  values[q] = CGAL::to_double(*value);
+                              });
+  return values;
+}
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief evaluates a spline (functional or parametric) at query points, in its own number
+  type.
+
+  Works as `evaluate_functional()` but returns the exact patch values (`FT` for a
+  functional spline, `Vector_3` for a parametric one).
+  \tparam GeomTraits a model of `Kernel`
+  \tparam PatchSource a callable with `patch(f)` returning the `Bezier_triangle` of face `f`
+  \return one entry per query, in input order: the value, or `std::nullopt` where the query
+  is outside the domain, in a hole, or not finite
+  \pre `locator` was built on `domain`
+*/
+template <class GeomTraits, class PatchSource>
+auto evaluate_at(const Planar_domain<GeomTraits>& domain, const Domain_locator<GeomTraits>& locator,
+                 PatchSource patch, const std::vector<typename GeomTraits::Point_2>& queries)
+    -> std::vector<std::optional<typename internal::Patch_of<
+        PatchSource, typename Planar_domain<GeomTraits>::Index>::Value_type>> {
+  using Patch = internal::Patch_of<PatchSource, typename Planar_domain<GeomTraits>::Index>;
+  using Value = typename Patch::Value_type;
+  std::vector<std::optional<Value>> values(queries.size());
+  internal::for_each_location(domain, locator, patch, queries,
+                              [&](std::size_t q, const Value* value) {
+                                if (value)
+                                  values[q] = *value;
+                              });
+  return values;
+}
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief evaluates a spline at one point: the value, or `std::nullopt` outside the domain
+  (see the overload for many points).
+*/
+template <class GeomTraits, class PatchSource>
+auto evaluate_at(const Planar_domain<GeomTraits>& domain, const Domain_locator<GeomTraits>& locator,
+                 PatchSource patch, const typename GeomTraits::Point_2& query)
+    -> std::optional<typename internal::Patch_of<
+        PatchSource, typename Planar_domain<GeomTraits>::Index>::Value_type> {
+  using Patch = internal::Patch_of<PatchSource, typename Planar_domain<GeomTraits>::Index>;
+  using Value = typename Patch::Value_type;
+  std::optional<Value> result;
+  internal::for_each_location(domain, locator, patch,
+                              std::vector<typename GeomTraits::Point_2>{query},
+                              [&](std::size_t, const Value* value) {
+                                if (value)
+                                  result = *value;
+                              });
+  return result;
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_EVALUATE_H

@@ -1,0 +1,385 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_TESSELLATE_H
+#define CGAL_TRIANGULAR_SPLINE_TESSELLATE_H
+
+#include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Value_traits.h>
+#include <CGAL/Triangular_spline/differential_geometry.h>
+#include <CGAL/Triangular_spline/evaluate.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/assertions.h>
+#include <CGAL/boost/graph/IO/OBJ.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief the size of a tessellation and the time it took.
+*/
+struct Tessellation_statistics {
+  std::size_t vertices = 0; ///< number of mesh vertices
+  std::size_t faces = 0;    ///< number of mesh triangles
+  double seconds = 0;       ///< wall-clock time of `tessellate()`
+};
+
+namespace internal {
+
+template <class Point>
+struct Surface_mesh_point {
+  static_assert(sizeof(Point) == 0, "tessellate() writes into a CGAL::Surface_mesh");
+};
+template <class Point>
+struct Surface_mesh_point<CGAL::Surface_mesh<Point>> {
+  using type = Point;
+};
+
+// Index of grid point (i, j, n-i-j) of a triangle cut into n^2: rows of n+1-i points.
+inline std::size_t grid_index(std::size_t i, std::size_t j, std::size_t n) {
+  return i * (n + 1) - i * (i - 1) / 2 + j;
+}
+
+// The value and the first and second partial derivatives of a patch at one point, from a
+// single de Casteljau pyramid: the m-2 steps towards the point are shared, and the last two
+// levels are taken towards the point or the directions x, y (D_u F = m f(u, a^{m-1}),
+// D_u D_v F = m(m-1) f(u, v, a^{m-2})). Rational, so exact with an exact FT; about five
+// times cheaper than one evaluation plus five partial_derivative() calls.
+template <class GeomTraits, class Value>
+struct Patch_jet {
+  using FT = typename GeomTraits::FT;
+  using Weights = std::array<FT, 3>;
+
+  explicit Patch_jet(const Bezier_triangle<GeomTraits, Value>& patch)
+      : m_patch(patch), m_degree(patch.degree()),
+        m_x(patch.barycentric_direction(typename GeomTraits::Vector_2(FT(1), FT(0)))),
+        m_y(patch.barycentric_direction(typename GeomTraits::Vector_2(FT(0), FT(1)))) {}
+
+  // `w`: barycentric coordinates w.r.t. the patch's vertices
+  void compute(const Weights& w, Value& value, Surface_derivatives& d) const {
+    constexpr bool graph = Value_traits<Value>::dimension == 1;
+    const Value zero = Value_traits<Value>::zero();
+    Scratch_net<Value> net(m_patch.control_points().begin(), m_patch.control_points().end());
+    const int m = m_degree;
+    for (int l = m; l > 2; --l)
+      de_casteljau_step(net, l, w);
+    Value fx = zero, fy = zero, fxx = zero, fxy = zero, fyy = zero;
+    if (m == 0) {
+      value = net[0];
+    } else {
+      const int top = (std::min)(m, 2);
+      Scratch_net<Value> at_w = net;
+      if (top == 2)
+        de_casteljau_step(at_w, 2, w);
+      const FT first(m);
+      value = linear(at_w, w);
+      fx = first * linear(at_w, m_x);
+      fy = first * linear(at_w, m_y);
+      if (top == 2) {
+        const FT second(m * (m - 1));
+        Scratch_net<Value> at_x = net, at_y = net;
+        de_casteljau_step(at_x, 2, m_x);
+        de_casteljau_step(at_y, 2, m_y);
+        fxx = second * linear(at_x, m_x);
+        fxy = second * linear(at_x, m_y);
+        fyy = second * linear(at_y, m_y);
+      }
+    }
+    d.fx = as_3d(fx, graph, 1, 0);
+    d.fy = as_3d(fy, graph, 0, 1);
+    d.fxx = as_3d(fxx, graph, 0, 0);
+    d.fxy = as_3d(fxy, graph, 0, 0);
+    d.fyy = as_3d(fyy, graph, 0, 0);
+  }
+
+private:
+  // the value of a linear net (b_100, b_010, b_001 in Table 2.3 order) at `v`
+  static Value linear(const Scratch_net<Value>& net, const Weights& v) {
+    Value result = v[0] * net[linear_index(1, 0, 1)] + v[1] * net[linear_index(0, 1, 1)] +
+                   v[2] * net[linear_index(0, 0, 1)];
+    return result;
+  }
+
+  const Bezier_triangle<GeomTraits, Value>& m_patch;
+  int m_degree;
+  Weights m_x, m_y;
+};
+
+template <class Mesh, class Vertex_index>
+void add_grid_face(Mesh& mesh, Vertex_index a, Vertex_index b, Vertex_index c) {
+  // Cannot fail on a validated domain: a null face would be a bug in the numbering.
+  if (mesh.add_face(a, b, c) == Mesh::null_face())
+    CGAL_error_msg("tessellate: Surface_mesh rejected a grid triangle");
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief tessellates the surface of a spline (one Bézier patch per domain triangle) into a
+  triangle mesh with per-vertex normals and curvatures.
+
+  Each domain triangle is cut uniformly into \f$4^L\f$ triangles, \f$L\f$ = `levels`: the
+  vertex grid of \f$L\f$ rounds of midpoint 4-split, i.e. the points with barycentric
+  coordinates \f$(i/n, j/n, k/n)\f$, \f$i+j+k = n = 2^L\f$. These coordinates are exact
+  (dyadic), and every grid point is evaluated directly by de Casteljau's algorithm in the
+  patch, exactly when `FT` is exact; the result is rounded to `double` once.
+
+  Grid points shared by several domain triangles become one mesh vertex: one per domain
+  vertex, \f$n-1\f$ per domain edge, \f$(n-1)(n-2)/2\f$ per triangle interior, so the
+  mesh has \f$V + E(n-1) + F(n-1)(n-2)/2\f$ vertices and \f$F n^2\f$ faces, is manifold,
+  and its border is exactly the boundary of the domain (outer boundary and holes), with
+  \f$n\f$ mesh edges per boundary edge. The vertices are numbered in this order: domain
+  vertex `v` is mesh vertex `v`; the interior points of domain edge `e` follow, from
+  `edge(e)[0]` to `edge(e)[1]`; then the triangle interiors, by face.
+
+  The mesh point of a functional value \f$z\f$ at domain point \f$(x,y)\f$ is
+  \f$(x, y, z)\f$; a parametric `Vector_3` value is the point itself. The faces are
+  oriented like the domain triangles (counter-clockwise seen from above), so for a
+  functional spline every face normal points up.
+
+  Three vertex property maps are filled (and created if needed), with the formulas of
+  `surface_curvature()`:
+  - `"v:normal"` (`Kernel_traits<Point>::Kernel::Vector_3`): the unit normal
+    \f$F_x \times F_y / \|F_x \times F_y\|\f$ from the exact first derivatives; zero
+    where the surface is singular;
+  - `"v:gaussian_curvature"` and `"v:mean_curvature"` (`double`), from the exact second
+    derivatives; NaN where the surface is singular.
+
+  The value and all five derivatives at a grid point come from one de Casteljau pyramid
+  (the first \f$m-2\f$ steps are shared), exact in `FT` and converted to `double` at the
+  end, like `surface_derivatives()`.
+
+  A vertex on a domain edge or at a domain vertex takes these quantities from one of the
+  incident patches. For a \f$C^1\f$ spline the normal is the same in every incident patch;
+  the curvatures, which involve second derivatives, may differ across an edge. Only the
+  normalisation (a square root) and the curvature formulas use `double`.
+
+  `CGAL::Surface_mesh::clear()` is called first, so the mesh's previous content and user
+  property maps are removed.
+
+  \tparam GeomTraits a model of `Kernel`
+  \tparam PatchSource a callable with `patch(f)` returning (by value or by reference) the
+  `Bezier_triangle<GeomTraits, Value>` of face `f` of `domain`, with `Value` either
+  `GeomTraits::FT` (functional) or `GeomTraits::Vector_3` (parametric); its vertices are
+  the triangle's vertices in any order
+  \tparam Mesh `CGAL::Surface_mesh<Point>` whose `Point` is a 3D point of a CGAL kernel,
+  typically `CGAL::Exact_predicates_inexact_constructions_kernel::Point_3`
+
+  \param domain the domain triangulation
+  \param patch the patch source
+  \param levels the number \f$L\f$ of uniform 4-splits, from 0 (the domain triangles) to 10
+  \param mesh the output mesh
+  \return the numbers of vertices and faces created and the time taken
+  \throws Invalid_input if `levels` is outside [0, 10] or the mesh would exceed the index
+  range of `Surface_mesh` (\f$2^{32}\f$ halfedges)
+*/
+template <class GeomTraits, class PatchSource, class Mesh>
+Tessellation_statistics tessellate(const Planar_domain<GeomTraits>& domain, PatchSource patch,
+                                   int levels, Mesh& mesh) {
+  using Domain = Planar_domain<GeomTraits>;
+  using Index = typename Domain::Index;
+  using FT = typename GeomTraits::FT;
+  using Point_2 = typename GeomTraits::Point_2;
+  using Patch = internal::Patch_of<PatchSource, Index>;
+  using Value = typename Patch::Value_type;
+  using Point_3 = typename internal::Surface_mesh_point<Mesh>::type;
+  using Vector_3 = typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3;
+  using Vertex_index = typename Mesh::Vertex_index;
+  constexpr int dimension = Value_traits<Value>::dimension;
+  static_assert(dimension == 1 || dimension == 3,
+                "tessellate() needs functional (scalar) or 3D parametric patches");
+
+  const auto start = std::chrono::steady_clock::now();
+  if (levels < 0 || levels > 10)
+    throw Invalid_input("tessellate: the number of levels must be between 0 and 10, got " +
+                        std::to_string(levels));
+  const std::size_t n = std::size_t(1) << levels;
+  const std::size_t V = domain.number_of_vertices(), E = domain.number_of_edges(),
+                    F = domain.number_of_faces();
+  const std::size_t inner = (n - 1) * (n - 2) / 2; // interior grid points of one triangle
+  const std::size_t vertices = V + E * (n - 1) + F * inner;
+  const std::size_t faces = F * n * n;
+  const std::size_t edges = E * n + F * 3 * n * (n - 1) / 2;
+  // Surface_mesh indices are 32-bit; the last value marks a null index.
+  if (2 * edges >= (std::numeric_limits<std::uint32_t>::max)())
+    throw Invalid_input("tessellate: " + std::to_string(faces) + " triangles at level " +
+                        std::to_string(levels) + " exceed the capacity of Surface_mesh");
+
+  mesh.clear();
+  mesh.reserve(static_cast<typename Mesh::size_type>(vertices),
+               static_cast<typename Mesh::size_type>(edges),
+               static_cast<typename Mesh::size_type>(faces));
+  auto normals =
+      mesh.template add_property_map<Vertex_index, Vector_3>("v:normal", Vector_3(0, 0, 0)).first;
+  auto gaussian =
+      mesh.template add_property_map<Vertex_index, double>("v:gaussian_curvature", 0.).first;
+  auto mean = mesh.template add_property_map<Vertex_index, double>("v:mean_curvature", 0.).first;
+  for (std::size_t v = 0; v < vertices; ++v)
+    mesh.add_vertex();
+
+  // Each shared grid point is evaluated once, in the first incident face.
+  std::vector<Index> vertex_owner(V), edge_owner(E);
+  for (std::size_t v = 0; v < V; ++v)
+    vertex_owner[v] = *domain.star_faces(static_cast<Index>(v)).first;
+  for (std::size_t e = 0; e < E; ++e) {
+    const auto& ef = domain.edge_faces(static_cast<Index>(e));
+    edge_owner[e] = ef[0] != Domain::null_index ? ef[0] : ef[1];
+  }
+
+  const FT step = FT(1) / FT(static_cast<int>(n)); // a power of two: exact in double
+  std::vector<Vertex_index> grid(internal::grid_index(n, 0, n) + 1);
+  for (std::size_t fi = 0; fi < F; ++fi) {
+    const Index f = static_cast<Index>(fi);
+    const auto& t = domain.face(f);
+    const Patch& bezier = patch(f);
+    const internal::Face_to_patch<GeomTraits, Value> frame(domain, f, bezier);
+    const internal::Patch_jet<GeomTraits, Value> jet(bezier);
+    for (std::size_t i = 0; i <= n; ++i)
+      for (std::size_t j = 0; i + j <= n; ++j) {
+        const std::array<std::size_t, 3> a{{i, j, n - i - j}};
+        const int zeros = (a[0] == 0) + (a[1] == 0) + (a[2] == 0);
+        std::size_t id;
+        bool owned;
+        if (zeros == 2) { // a domain vertex
+          const std::size_t c = a[0] != 0 ? 0 : (a[1] != 0 ? 1 : 2);
+          id = t[c];
+          owned = vertex_owner[t[c]] == f;
+        } else if (zeros == 1) { // on the edge opposite the zero coordinate
+          const std::size_t z = a[0] == 0 ? 0 : (a[1] == 0 ? 1 : 2);
+          const Index e = domain.face_edge(f, static_cast<int>(z));
+          const std::size_t after = (z + 1) % 3;
+          // position along lo -> hi = weight of hi
+          const std::size_t along = t[after] == domain.edge(e)[1] ? a[after] : a[(z + 2) % 3];
+          id = V + e * (n - 1) + (along - 1);
+          owned = edge_owner[e] == f;
+        } else {
+          id = V + E * (n - 1) + fi * inner + internal::grid_index(i - 1, j - 1, n - 3);
+          owned = true;
+        }
+        const Vertex_index vertex(static_cast<typename Mesh::size_type>(id));
+        grid[internal::grid_index(i, j, n)] = vertex;
+        if (!owned)
+          continue;
+        const std::array<FT, 3> weights{{FT(static_cast<int>(a[0])) * step,
+                                         FT(static_cast<int>(a[1])) * step,
+                                         FT(static_cast<int>(a[2])) * step}};
+        Value value = Value_traits<Value>::zero();
+        Surface_derivatives derivatives;
+        jet.compute(frame.patch_weights(weights), value, derivatives);
+        if constexpr (dimension == 1) {
+          const Point_2 p =
+              zeros == 2 ? domain.point(static_cast<Index>(id)) : frame.point(weights);
+          mesh.point(vertex) =
+              Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(value));
+        } else {
+          mesh.point(vertex) = Point_3(CGAL::to_double(value.x()), CGAL::to_double(value.y()),
+                                       CGAL::to_double(value.z()));
+        }
+        const Surface_curvature curvature = surface_curvature(derivatives);
+        normals[vertex] = Vector_3(curvature.normal[0], curvature.normal[1], curvature.normal[2]);
+        gaussian[vertex] = curvature.gaussian;
+        mean[vertex] = curvature.mean;
+      }
+    // The affine map from barycentric to domain coordinates keeps orientation, so both
+    // kinds of grid triangles are counter-clockwise like the domain triangle.
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; i + j < n; ++j) {
+        // upward: (i+1, j, k), (i, j+1, k), (i, j, k+1) with i+j+k = n-1
+        internal::add_grid_face(mesh, grid[internal::grid_index(i + 1, j, n)],
+                                grid[internal::grid_index(i, j + 1, n)],
+                                grid[internal::grid_index(i, j, n)]);
+        // downward: (i, j+1, k+1), (i+1, j, k+1), (i+1, j+1, k) with i+j+k = n-2
+        if (i + j + 2 <= n)
+          internal::add_grid_face(mesh, grid[internal::grid_index(i, j + 1, n)],
+                                  grid[internal::grid_index(i + 1, j, n)],
+                                  grid[internal::grid_index(i + 1, j + 1, n)]);
+      }
+  }
+
+  Tessellation_statistics statistics;
+  statistics.vertices = mesh.number_of_vertices();
+  statistics.faces = mesh.number_of_faces();
+  statistics.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return statistics;
+}
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief writes a surface mesh to a file, the format chosen by the extension of `path`
+  (letter case ignored):
+
+  - `.ply`: binary little-endian PLY with the vertex normals `"v:normal"` (`nx ny nz`) and
+    every other vertex property of a simple type, such as the curvatures written by
+    `tessellate()` (CGAL's `Surface_mesh` PLY writer);
+  - `.off`: ASCII OFF, as `NOFF` with normals when `"v:normal"` exists, 17 digits;
+  - `.obj`: ASCII Wavefront OBJ, with `vn` lines (one per vertex, in vertex order) when
+    `"v:normal"` exists, 17 digits.
+
+  \tparam Point the point type of the mesh (a CGAL 3D point)
+  \throws Invalid_input if the extension is not one of the above
+  \throws std::runtime_error (naming `path`) if the file cannot be opened or written
+*/
+template <class Point>
+void write_mesh(const std::string& path, const CGAL::Surface_mesh<Point>& mesh) {
+  using Mesh = CGAL::Surface_mesh<Point>;
+  using Vector_3 = typename CGAL::Kernel_traits<Point>::Kernel::Vector_3;
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of("/\\");
+  std::string extension;
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash))
+    extension = path.substr(dot + 1);
+  for (char& c : extension)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != "ply" && extension != "off" && extension != "obj")
+    throw Invalid_input("write_mesh: cannot choose a format for '" + path +
+                        "' (use the extension .ply, .off or .obj)");
+
+  std::ofstream out(path, extension == "ply" ? std::ios::out | std::ios::binary : std::ios::out);
+  if (!out)
+    throw std::runtime_error("write_mesh: cannot open '" + path + "' for writing");
+  bool written = false;
+  if (extension == "ply") {
+    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
+    written = CGAL::IO::write_PLY(out, mesh);
+  } else if (extension == "off") {
+    written = CGAL::IO::write_OFF(out, mesh, CGAL::parameters::stream_precision(17));
+  } else {
+    // CGAL's OBJ writer has no Surface_mesh overload: normals only through the parameter.
+    const auto [normals, has_normals] =
+        mesh.template property_map<typename Mesh::Vertex_index, Vector_3>("v:normal");
+    if (has_normals)
+      written = CGAL::IO::write_OBJ(
+          out, mesh, CGAL::parameters::stream_precision(17).vertex_normal_map(normals));
+    else
+      written = CGAL::IO::write_OBJ(out, mesh, CGAL::parameters::stream_precision(17));
+  }
+  out.close();
+  // The PLY writer reports success without checking the stream: check it here.
+  if (!written || out.fail())
+    throw std::runtime_error("write_mesh: writing '" + path + "' failed");
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_TESSELLATE_H

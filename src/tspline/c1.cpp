@@ -1,0 +1,99 @@
+// tspline c1 and tspline certify: argument handling; the work is in c1_job.cpp.
+
+#include "c1_job.h"
+#include "cli.h"
+#include "commands.h"
+
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace tspline {
+
+int run_c1(const std::vector<std::string>& args) {
+  Argument_parser parser("c1", std::string(command_summary("c1")));
+  parser.describe(
+      "Builds Xu's C^1 quintic spline over a planar triangulation: prescribes a minimal "
+      "determining set of control points from the data and propagates the others, "
+      "handles degenerate frames, and certifies C^1 continuity on every interior edge "
+      "(exactly with --exact).");
+  parser.describe("Input: '.xyz' (one 'x y z' per line, Delaunay triangulation of (x, y)) or a "
+                  "triangle mesh (.off/.obj/.ply/.stl) whose vertex (x, y) is the domain and z "
+                  "the height; holes and non-convex boundaries of a mesh are kept.");
+  parser.add_option("input", "FILE", "scattered points (.xyz) or triangle mesh");
+  parser.add_option("fit", "MODE",
+                    "approximate (polar blend of vertex data), interpolate (corners through the "
+                    "data), tangent (interpolate values and estimated gradients)",
+                    "approximate");
+  parser.add_option("fix", "FIX",
+                    "degenerate frames: reroute (local re-routing) or perturb "
+                    "(move vertices slightly)",
+                    "reroute");
+  parser.add_switch("exact", "exact rational arithmetic: the certificate is a proof");
+  parser.add_switch("dimension", "also compute dim S^1_5 as the exact rank of the C^1 conditions");
+  parser.add_option("report", "FILE.json", "write the JSON report");
+  parser.add_option("mesh", "FILE", "write the tessellated surface (.ply/.off/.obj)");
+  parser.add_option("levels", "L", "4-split levels of the tessellation (0..8)", "3");
+  parser.add_option("save", "FILE.spline", "save the spline (domain and control points)");
+  parser.add_option("query", "FILE.xy", "evaluate at these points ('x y' per line)");
+  parser.add_option("values", "OUT.txt", "one value per query point, 'nan' outside the domain");
+  const Parsed_arguments parsed = parser.parse(args);
+  if (parsed.help_requested()) {
+    std::cout << parser.help();
+    return 0;
+  }
+  if (!parsed.has("input"))
+    throw Usage_error("missing --input FILE (see 'tspline c1 --help'; 'tspline demo' needs none)");
+  C1_job job;
+  job.input = parsed.value("input");
+  job.fit = parsed.value("fit");
+  job.fix = parsed.value("fix");
+  job.exact = parsed.is_set("exact");
+  job.dimension = parsed.is_set("dimension");
+  job.levels = static_cast<int>(parsed.integer("levels"));
+  for (const auto& [name, field] : {std::pair<const char*, std::string*>{"report", &job.report},
+                                    {"mesh", &job.mesh},
+                                    {"save", &job.save},
+                                    {"query", &job.query},
+                                    {"values", &job.values}})
+    if (parsed.has(name))
+      *field = parsed.value(name);
+  if (job.query.empty() != job.values.empty())
+    throw Usage_error("--query and --values go together");
+  run_c1_job(job, std::cout);
+  return 0;
+}
+
+int run_certify(const std::vector<std::string>& args) {
+  Argument_parser parser("certify", std::string(command_summary("certify")));
+  parser.describe("Reads a saved spline (format 'tspline-spline 1', see the manual) and checks "
+                  "Xu's C^1 conditions (3.4) and (3.5) on every interior edge with exact rational "
+                  "arithmetic. Exit status 0 if every edge is C^1, 1 otherwise (the failing edges "
+                  "are named).");
+  parser.add_positional("FILE.spline", "the spline to check");
+  parser.add_option("report", "FILE.json", "write the per-edge results as JSON");
+  parser.add_option("tolerance", "T",
+                    "accept edges whose exact residual is at most T (for splines built in double)");
+  const Parsed_arguments parsed = parser.parse(args);
+  if (parsed.help_requested()) {
+    std::cout << parser.help();
+    return 0;
+  }
+  const double tolerance = parsed.has("tolerance") ? parsed.number("tolerance") : -1.0;
+  if (parsed.has("tolerance") && tolerance < 0)
+    throw Usage_error("--tolerance must be non-negative");
+  const Certify_result result = run_certify_job(parsed.positionals().at(0), tolerance, std::cout);
+  if (parsed.has("report")) {
+    std::ofstream file(parsed.value("report"));
+    if (!file)
+      throw std::runtime_error("cannot write '" + parsed.value("report") + "'");
+    result.report.write(file);
+    file << '\n';
+  }
+  if (!result.certified)
+    std::cerr << "tspline certify: NOT C^1: the failing edges are listed above\n";
+  return result.certified ? 0 : 1;
+}
+
+} // namespace tspline

@@ -1,0 +1,384 @@
+// The C^1 quintic spline pipeline: read -> triangulate -> degenerate frames -> plan -> fit ->
+// propagate -> certify -> outputs. Instantiated for double and for exact rationals.
+
+#include "c1_job.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangular_spline/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Domain_locator.h>
+#include <CGAL/Triangular_spline/IO/demo_data.h>
+#include <CGAL/Triangular_spline/IO/mesh_domain.h>
+#include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/IO/scattered_data.h>
+#include <CGAL/Triangular_spline/IO/spline_file.h>
+#include <CGAL/Triangular_spline/Spline_space.h>
+#include <CGAL/Triangular_spline/certify.h>
+#include <CGAL/Triangular_spline/evaluate.h>
+#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/tessellate.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace tspline {
+
+namespace {
+
+namespace TS = CGAL::Triangular_spline;
+using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+
+class Stopwatch {
+public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - m_last).count();
+    m_last = now;
+    return s;
+  }
+
+private:
+  std::chrono::steady_clock::time_point m_last = std::chrono::steady_clock::now();
+};
+
+std::string lowercase_extension(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  for (char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::ifstream open_input(const std::string& path) {
+  std::ifstream in(path);
+  if (!in)
+    throw std::runtime_error("cannot open '" + path + "'");
+  return in;
+}
+
+std::ofstream open_output(const std::string& path) {
+  std::ofstream out(path);
+  if (!out)
+    throw std::runtime_error("cannot write '" + path + "'");
+  return out;
+}
+
+template <class K>
+struct Input {
+  TS::Planar_domain<K> domain;
+  std::vector<typename K::FT> values;
+  std::string kind;
+  std::size_t merged_duplicates = 0;
+};
+
+template <class K>
+Input<K> read_input(const std::string& path) {
+  if (path.empty()) {
+    auto [domain, values] = TS::demo_data<K>();
+    return {std::move(domain), std::move(values), "embedded demo data (L-shape with a hole)", 0};
+  }
+  const std::string ext = lowercase_extension(path);
+  if (ext == "xyz" || ext == "txt") {
+    std::ifstream in = open_input(path);
+    const TS::Scattered_data<K> data = TS::read_xyz<K>(in, path);
+    auto [domain, values] = TS::delaunay_domain(data);
+    return {std::move(domain), std::move(values), "scattered points, Delaunay triangulation",
+            data.merged_duplicates};
+  }
+  if (ext == "off" || ext == "obj" || ext == "ply" || ext == "stl") {
+    auto [domain, values] = TS::read_mesh_domain<K>(path);
+    return {std::move(domain), std::move(values), "triangle mesh, (x, y) as the domain", 0};
+  }
+  throw TS::Invalid_input("'" + path + "': unknown input format '." + ext +
+                          "' (expected .xyz for scattered points, or .off/.obj/.ply/.stl)");
+}
+
+template <class Point_2>
+Json point_json(const Point_2& p) {
+  Json a = Json::array();
+  a.push_back(CGAL::to_double(p.x()));
+  a.push_back(CGAL::to_double(p.y()));
+  return a;
+}
+
+template <class K>
+std::vector<typename K::Point_2> read_queries(const std::string& path) {
+  std::ifstream in = open_input(path);
+  std::vector<typename K::Point_2> points;
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    const std::vector<std::string> tokens = TS::internal::tokens_of_line(line);
+    if (tokens.empty())
+      continue;
+    if (tokens.size() != 2)
+      throw TS::Invalid_input(path + ":" + std::to_string(number) + ": expected 'x y', got " +
+                              std::to_string(tokens.size()) + " fields");
+    try {
+      points.emplace_back(TS::parse_number<typename K::FT>(tokens[0]),
+                          TS::parse_number<typename K::FT>(tokens[1]));
+    } catch (const TS::Invalid_input& e) {
+      throw TS::Invalid_input(path + ":" + std::to_string(number) + ": " + e.what());
+    }
+  }
+  return points;
+}
+
+template <class K>
+Json run(const C1_job& job, std::ostream& out) {
+  using Spline = TS::C1_quintic_spline<K>;
+  Stopwatch clock, total;
+  Json timings = Json::object();
+  Json report = Json::object();
+
+  Input<K> input = read_input<K>(job.input);
+  timings.set("read_and_triangulate", clock.lap());
+  const std::size_t input_vertices = input.domain.number_of_vertices();
+
+  // Degenerate frames are re-routed by the plan; the perturbation fix moves vertices first.
+  std::vector<TS::Vertex_move<typename K::Point_2, std::uint32_t>> moves;
+  TS::Planar_domain<K> domain = job.fix == "perturb"
+                                    ? TS::perturb_degenerate_vertices(input.domain, moves)
+                                    : std::move(input.domain);
+  const auto original_frames = job.fix == "perturb"
+                                   ? TS::find_degenerate_frames(input.domain)
+                                   : TS::Degenerate_frame_analysis<std::uint32_t>();
+  timings.set("degenerate_frame_fix", clock.lap());
+
+  const TS::Fit fit = job.fit == "interpolate" ? TS::Fit::Interpolate
+                      : job.fit == "tangent"   ? TS::Fit::Tangent_planes
+                                               : TS::Fit::Approximate;
+  Spline spline(std::move(domain), fit == TS::Fit::Approximate
+                                       ? TS::Corner_frame::Symmetric_stars
+                                       : TS::Corner_frame::Corner_and_two_stars);
+  timings.set("plan", clock.lap());
+  TS::fit_vertex_data(spline, input.values, fit);
+  timings.set("fit_and_propagate", clock.lap());
+
+  const auto& d = spline.domain();
+  auto patch = [&spline](std::uint32_t f) { return spline.patch(f); };
+  // Double builds: residuals are round-off, accepted up to 1e-10 of the largest control
+  // value; exact builds: the verdict is a proof.
+  double scale = 1;
+  for (const auto& v : spline.values())
+    scale = (std::max)(scale, TS::max_abs_coordinate(v));
+  const TS::C1_certificate certificate = TS::certify_C1(d, patch, 1e-10 * scale);
+  timings.set("certify", clock.lap());
+
+  std::optional<long long> morgan_scott = TS::morgan_scott_dimension(d);
+  std::optional<std::size_t> rank_dimension;
+  if (job.dimension) {
+    rank_dimension = TS::exact_spline_dimension(d);
+    timings.set("dimension_exact", clock.lap());
+  }
+
+  std::size_t numerical_frames = 0;
+  for (const auto& f : spline.degenerate_frames())
+    numerical_frames += f.numerical ? 1 : 0;
+
+  report.set("input", job.input.empty() ? std::string("demo") : job.input);
+  report.set("input_kind", input.kind);
+  report.set("number_type", job.exact ? "exact" : "double");
+  report.set("fit", job.fit);
+  report.set("fix", job.fix);
+  report.set("vertices", d.number_of_vertices());
+  report.set("faces", d.number_of_faces());
+  report.set("interior_edges", d.number_of_interior_edges());
+  report.set("boundary_edges", d.number_of_boundary_edges());
+  report.set("boundary_loops", d.number_of_boundary_loops());
+  report.set("merged_duplicate_points", input.merged_duplicates);
+  report.set("free_parameters", spline.number_of_free_parameters());
+  report.set("free_parameters_formula", "3V + 3F + E_I + 3E_B + sigma");
+  report.set("dimension_morgan_scott", morgan_scott ? Json(*morgan_scott) : Json());
+  report.set("dimension_exact", rank_dimension ? Json(*rank_dimension) : Json());
+  report.set("singular_vertices", spline.singular_vertices().size());
+  report.set("degenerate_frames", job.fix == "perturb" ? original_frames.frames.size()
+                                                       : spline.degenerate_frames().size());
+  report.set("degenerate_frames_numerical", numerical_frames);
+  Json moved = Json::array();
+  for (const auto& m : moves) {
+    Json entry = Json::object();
+    entry.set("vertex", m.vertex);
+    entry.set("from", point_json(m.from));
+    entry.set("to", point_json(m.to));
+    entry.set("distance", m.distance);
+    moved.push_back(entry);
+  }
+  report.set("perturbed_vertices", moved);
+  // certified_c1 is a proof: exact builds only. Double builds report the tolerance check.
+  report.set("certified_c1", certificate.exact && certificate.certified);
+  report.set("certificate_exact", certificate.exact);
+  report.set("c1_within_tolerance", certificate.certified);
+  report.set("c1_tolerance", certificate.tolerance);
+  report.set("max_c1_residual", certificate.max_residual);
+  report.set("failed_edges", certificate.failed_edges);
+
+  if (!job.mesh.empty()) {
+    CGAL::Surface_mesh<Fast::Point_3> mesh;
+    const auto stats = TS::tessellate(d, patch, job.levels, mesh);
+    TS::write_mesh(job.mesh, mesh);
+    Json m = Json::object();
+    m.set("path", job.mesh);
+    m.set("levels", job.levels);
+    m.set("vertices", stats.vertices);
+    m.set("faces", stats.faces);
+    report.set("mesh", m);
+    timings.set("tessellate_and_write", clock.lap());
+  }
+  if (!job.save.empty()) {
+    std::vector<TS::Bezier_triangle<K>> patches;
+    patches.reserve(d.number_of_faces());
+    for (std::uint32_t f = 0; f < d.number_of_faces(); ++f)
+      patches.push_back(spline.patch(f));
+    std::ofstream file = open_output(job.save);
+    TS::write_spline_file(file, d, patches);
+    report.set("saved", job.save);
+    timings.set("save", clock.lap());
+  }
+  if (!job.query.empty()) {
+    if (job.values.empty())
+      throw TS::Invalid_input("--query needs --values OUT.txt for the results");
+    const auto queries = read_queries<K>(job.query);
+    const TS::Domain_locator<K> locator(d);
+    const std::vector<double> values = TS::evaluate_functional(d, locator, patch, queries);
+    std::ofstream file = open_output(job.values);
+    std::size_t outside = 0;
+    for (double v : values) {
+      if (std::isnan(v)) {
+        file << "nan\n";
+        ++outside;
+      } else {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.17g", v);
+        file << buffer << '\n';
+      }
+    }
+    Json q = Json::object();
+    q.set("points", queries.size());
+    q.set("outside_domain", outside);
+    q.set("values", job.values);
+    report.set("query", q);
+    timings.set("query", clock.lap());
+  }
+  timings.set("total", total.lap());
+  report.set("timings_seconds", timings);
+
+  if (!job.quiet) {
+    out << "C^1 quintic spline (Xu) over " << input.kind << "\n"
+        << "  domain: " << d.number_of_vertices() << " vertices (" << input_vertices
+        << " in the input), " << d.number_of_faces() << " triangles, "
+        << d.number_of_interior_edges() << " interior and " << d.number_of_boundary_edges()
+        << " boundary edges, " << d.number_of_boundary_loops() << " boundary loop(s)\n"
+        << "  degenerate frames: "
+        << (job.fix == "perturb" ? original_frames.frames.size()
+                                 : spline.degenerate_frames().size())
+        << (job.fix == "perturb"
+                ? " (fixed by moving " + std::to_string(moves.size()) + " vertices)"
+                : std::string(" (re-routed)"))
+        << ", singular vertices: " << spline.singular_vertices().size() << "\n"
+        << "  free parameters: " << spline.number_of_free_parameters();
+    if (morgan_scott)
+      out << " (Morgan-Scott dimension " << *morgan_scott << ")";
+    if (rank_dimension)
+      out << " (exact rank dimension " << *rank_dimension << ")";
+    out << "\n  fit: " << job.fit << ", arithmetic: " << (job.exact ? "exact rationals" : "double")
+        << "\n"
+        << "  " << certificate.summary();
+    if (!certificate.exact)
+      out << "  (double build: use --exact for an exact proof of C^1)\n";
+  }
+  if (!job.report.empty()) {
+    std::ofstream file = open_output(job.report);
+    report.write(file);
+    file << '\n';
+  }
+  return report;
+}
+
+template <class K, class Value>
+Certify_result certify_file(std::istream& in, const std::string& path, double tolerance,
+                            std::ostream& out) {
+  const TS::Spline_file<K, Value> file = TS::read_spline_file<K, Value>(in, path);
+  auto patch = [&file](std::uint32_t f) -> const TS::Bezier_triangle<K, Value>& {
+    return file.patches[f];
+  };
+  TS::C1_certificate c = TS::certify_C1(file.domain, patch);
+  if (tolerance >= 0) {
+    // Exact residuals, compared with the user's tolerance.
+    c.failed_edges = 0;
+    for (auto& e : c.edges) {
+      e.c1 = e.residual <= tolerance;
+      c.failed_edges += e.c1 ? 0 : 1;
+    }
+    c.certified = c.failed_edges == 0;
+    c.tolerance = tolerance;
+  }
+  out << "spline file " << path << ": " << file.domain.number_of_vertices() << " vertices, "
+      << file.domain.number_of_faces() << " patches of degree "
+      << (file.patches.empty() ? 0 : file.patches.front().degree()) << "\n"
+      << c.summary();
+  if (tolerance >= 0)
+    out << "  (verdict with tolerance " << tolerance << " on exact residuals)\n";
+  Json report = Json::object();
+  report.set("file", path);
+  report.set("vertices", file.domain.number_of_vertices());
+  report.set("faces", file.domain.number_of_faces());
+  report.set("certified_c1", c.certified);
+  report.set("exact", true);
+  report.set("tolerance", tolerance >= 0 ? Json(tolerance) : Json());
+  report.set("max_c1_residual", c.max_residual);
+  report.set("interior_edges", c.interior_edges);
+  report.set("failed_edges", c.failed_edges);
+  Json edges = Json::array();
+  for (const auto& e : c.edges) {
+    Json entry = Json::object();
+    entry.set("edge", e.edge);
+    Json v = Json::array();
+    v.push_back(e.vertices[0]);
+    v.push_back(e.vertices[1]);
+    entry.set("vertices", v);
+    entry.set("c0", e.c0);
+    entry.set("c1", e.c1);
+    entry.set("residual", e.residual);
+    edges.push_back(entry);
+  }
+  report.set("edges", edges);
+  return {report, c.certified};
+}
+
+} // namespace
+
+Json run_c1_job(const C1_job& job, std::ostream& out) {
+  if (job.fit != "approximate" && job.fit != "interpolate" && job.fit != "tangent")
+    throw Usage_error("--fit must be approximate, interpolate or tangent, not '" + job.fit + "'");
+  if (job.fix != "reroute" && job.fix != "perturb")
+    throw Usage_error("--fix must be reroute or perturb, not '" + job.fix + "'");
+  if (job.levels < 0 || job.levels > 8)
+    throw Usage_error("--levels must be between 0 and 8");
+  return job.exact ? run<Exact>(job, out) : run<Fast>(job, out);
+}
+
+Certify_result run_certify_job(const std::string& path, double tolerance, std::ostream& out) {
+  // The header says the dimension: peek at it, then read the whole file exactly.
+  std::ifstream in = open_input(path);
+  std::string line;
+  int dimension = 1;
+  while (std::getline(in, line)) {
+    const auto tokens = TS::internal::tokens_of_line(line);
+    if (tokens.size() == 2 && tokens[0] == "dimension") {
+      dimension = tokens[1] == "3" ? 3 : 1;
+      break;
+    }
+  }
+  in.clear();
+  in.seekg(0);
+  return dimension == 3 ? certify_file<Exact, Exact::Vector_3>(in, path, tolerance, out)
+                        : certify_file<Exact, Exact::FT>(in, path, tolerance, out);
+}
+
+} // namespace tspline

@@ -1,0 +1,781 @@
+// Tests of the input/output layer: exact number parsing, scattered .xyz data and its
+// Delaunay domain, triangle meshes read through CGAL IO, constrained domains with holes,
+// the embedded demo data set, and the tspline-spline file format. Every rejection path is
+// checked together with the content of its message.
+
+#include "test_support.h"
+
+#include <CGAL/Triangular_spline/IO/constrained_domain.h>
+#include <CGAL/Triangular_spline/IO/demo_data.h>
+#include <CGAL/Triangular_spline/IO/mesh_domain.h>
+#include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/IO/scattered_data.h>
+#include <CGAL/Triangular_spline/IO/spline_file.h>
+
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <sstream>
+#include <string>
+
+using namespace ts_test;
+using TS::Invalid_input;
+using Exact_FT = Exact_kernel::FT;
+
+namespace {
+
+// Runs `f`, which must throw Invalid_input whose message contains every string of `parts`.
+::testing::AssertionResult throws_with(const std::function<void()>& f,
+                                       std::initializer_list<std::string> parts) {
+  try {
+    f();
+  } catch (const Invalid_input& e) {
+    const std::string message = e.what();
+    for (const std::string& part : parts)
+      if (message.find(part) == std::string::npos)
+        return ::testing::AssertionFailure()
+               << "message \"" << message << "\" lacks \"" << part << "\"";
+    return ::testing::AssertionSuccess();
+  } catch (const std::exception& e) {
+    return ::testing::AssertionFailure() << "wrong exception type: " << e.what();
+  }
+  return ::testing::AssertionFailure() << "no exception";
+}
+
+// A fresh directory under the system temporary directory, removed at the end of the test.
+class Temporary_directory {
+public:
+  Temporary_directory() {
+    static std::atomic<int> counter{0};
+    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+    m_path = std::filesystem::temp_directory_path() /
+             ("tspline_test_io_" + std::to_string(stamp) + "_" + std::to_string(counter++));
+    std::filesystem::create_directories(m_path);
+  }
+  ~Temporary_directory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(m_path, ignored);
+  }
+  std::string write(const std::string& name, const std::string& contents) const {
+    const std::filesystem::path file = m_path / name;
+    std::ofstream(file) << contents;
+    return file.string();
+  }
+  std::string path(const std::string& name) const { return (m_path / name).string(); }
+
+private:
+  std::filesystem::path m_path;
+};
+
+template <class K>
+typename K::FT ratio(int p, int q) {
+  return typename K::FT(p) / typename K::FT(q);
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------
+// Numbers
+// ---------------------------------------------------------------------------------------
+
+TEST(NumberParsing, ExactDecimalsAreExact) {
+  EXPECT_EQ(TS::parse_number<Exact_FT>("0.1"), Exact_FT(1) / Exact_FT(10));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("1e-3"), Exact_FT(1) / Exact_FT(1000));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("-2.5e2"), Exact_FT(-250));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("+.5"), Exact_FT(1) / Exact_FT(2));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("5."), Exact_FT(5));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("0012.50E+1"), Exact_FT(125));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("-0.000"), Exact_FT(0));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("0e99999999999999"), Exact_FT(0));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("3/4"), Exact_FT(3) / Exact_FT(4));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("-14/4"), Exact_FT(-7) / Exact_FT(2));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("123456789012345678901234567890"),
+            TS::parse_number<Exact_FT>("1234567890123456789012345678.9e2"));
+  // 0.1 is not a double: the exact value differs from the double's.
+  EXPECT_NE(TS::parse_number<Exact_FT>("0.1"), Exact_FT(0.1));
+  // The largest accepted magnitude, and the nearest to zero.
+  EXPECT_EQ(TS::parse_number<Exact_FT>("1e150"), TS::internal::power_of_ten<Exact_FT>(150));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("-1e150"), -TS::internal::power_of_ten<Exact_FT>(150));
+  EXPECT_GT(TS::parse_number<Exact_FT>("4.9406564584124654e-324"), Exact_FT(0));
+}
+
+TEST(NumberParsing, DoublesUseStrtod) {
+  EXPECT_EQ(TS::parse_number<double>("0.1"), 0.1);
+  EXPECT_EQ(TS::parse_number<double>("1e-3"), 1e-3);
+  EXPECT_EQ(TS::parse_number<double>("-2.5e2"), -250.0);
+  EXPECT_EQ(TS::parse_number<double>("1e150"), 1e150);
+  EXPECT_EQ(TS::parse_number<double>(".5"), 0.5);
+}
+
+TEST(NumberParsing, RejectionsQuoteTheToken) {
+  for (const bool exact : {false, true}) {
+    auto parse = [exact](const std::string& token) {
+      return [exact, token] {
+        if (exact)
+          TS::parse_number<Exact_FT>(token);
+        else
+          TS::parse_number<double>(token);
+      };
+    };
+    SCOPED_TRACE(exact ? "exact" : "double");
+    EXPECT_TRUE(throws_with(parse(""), {"empty"}));
+    for (const char* token : {"nan", "NaN", "-nan", "inf", "-Inf", "infinity"})
+      EXPECT_TRUE(throws_with(parse(token), {"\"" + std::string(token) + "\"", "not finite"}));
+    for (const std::string& token :
+         {std::string("1e200"), std::string("-1e151"), std::string("1.0000000000000001e151"),
+          std::string("2e150"), "1" + std::string(155, '0')})
+      EXPECT_TRUE(throws_with(parse(token), {"\"" + token + "\"", "too large"}));
+    for (const char* token : {"abc", "1.2.3", "1e", "1e+", "e5", ".", "-", "1,5", "0x10", "1 2",
+                              "12abc", "--1", "1e5.0", "1/"})
+      EXPECT_TRUE(throws_with(parse(token), {"\"" + std::string(token) + "\""}));
+    EXPECT_TRUE(throws_with(parse("1e-500"), {"\"1e-500\"", "too close to zero"}));
+  }
+  // Fractions: exact only, with a positive denominator.
+  EXPECT_TRUE(
+      throws_with([] { TS::parse_number<double>("1/3"); }, {"\"1/3\"", "not a decimal number"}));
+  EXPECT_TRUE(throws_with([] { TS::parse_number<Exact_FT>("1/0"); }, {"\"1/0\"", "zero"}));
+  EXPECT_TRUE(throws_with([] { TS::parse_number<Exact_FT>("1/-3"); }, {"\"1/-3\""}));
+  EXPECT_TRUE(throws_with([] { TS::parse_number<Exact_FT>("0.5/3"); }, {"\"0.5/3\""}));
+  EXPECT_TRUE(throws_with([] { TS::parse_number<Exact_FT>("-3" + std::string(150, '0') + "/2"); },
+                          {"too large"}));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("-2" + std::string(150, '0') + "/2"),
+            -TS::internal::power_of_ten<Exact_FT>(150));
+  EXPECT_TRUE(throws_with([] { TS::parse_number<Exact_FT>("2" + std::string(150, '0') + "/0001"); },
+                          {"too large"}));
+  EXPECT_EQ(TS::parse_number<Exact_FT>("0003/0004"), Exact_FT(3) / Exact_FT(4));
+}
+
+TEST(NumberParsing, FormatRoundTrips) {
+  EXPECT_EQ(TS::format_number<Exact_FT>(Exact_FT(1) / Exact_FT(3)), "1/3");
+  EXPECT_EQ(TS::format_number<Exact_FT>(Exact_FT(-10) / Exact_FT(4)), "-5/2");
+  EXPECT_EQ(TS::format_number(Exact_FT(7)), "7");
+  EXPECT_EQ(TS::format_number(Exact_FT(0)), "0");
+  EXPECT_EQ(TS::format_number(0.1), "0.10000000000000001");
+  Random_rationals random(7);
+  for (int i = 0; i < 200; ++i) {
+    const Exact_FT q = random.rational<Exact_FT>(1000000, 999983);
+    EXPECT_EQ(TS::parse_number<Exact_FT>(TS::format_number(q)), q);
+    const double d = random.rational<double>(1000000, 999983);
+    EXPECT_EQ(TS::parse_number<double>(TS::format_number(d)), d);
+  }
+  EXPECT_EQ(TS::parse_number<double>(TS::format_number(5e-324)), 5e-324);
+}
+
+TEST(NumberParsing, NearestDoubleRoundsCorrectly) {
+  // mpq_get_d truncates; the reader must round to nearest like strtod.
+  for (const char* token : {"0.1", "0.7", "1e-7", "-0.3", "2.675", "123456.789"})
+    EXPECT_EQ(TS::internal::nearest_double(TS::parse_number<Exact_FT>(token)),
+              TS::parse_number<double>(token))
+        << token;
+  EXPECT_EQ(TS::internal::nearest_double<Exact_FT>(Exact_FT(1) / Exact_FT(3)), 1.0 / 3.0);
+  EXPECT_EQ(TS::internal::nearest_double<Exact_FT>(Exact_FT(-2) / Exact_FT(3)), -2.0 / 3.0);
+  // Ties go to the even mantissa: 1 + 2^-53 to 1, 1 + 3 * 2^-53 to 1 + 2^-51.
+  const Exact_FT u(std::ldexp(1.0, -53));
+  EXPECT_EQ(TS::internal::nearest_double<Exact_FT>(Exact_FT(1) + u), 1.0);
+  EXPECT_EQ(TS::internal::nearest_double<Exact_FT>(Exact_FT(1) + Exact_FT(3) * u),
+            1.0 + std::ldexp(1.0, -51));
+  EXPECT_EQ(TS::internal::nearest_double<Exact_FT>(Exact_FT(-1) - u), -1.0);
+}
+
+// ---------------------------------------------------------------------------------------
+// Scattered data (.xyz) and Delaunay domains
+// ---------------------------------------------------------------------------------------
+
+template <class K>
+class ScatteredData : public ::testing::Test {};
+TYPED_TEST_SUITE(ScatteredData, Kernels, Kernel_names);
+
+TYPED_TEST(ScatteredData, ReadsPointsCommentsAndBlankLines) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  std::istringstream in("# x y z\n"
+                        "0 0 1\n"
+                        "\n"
+                        "   1 0 0.1   # trailing comment\r\n"
+                        "0 1 -2.5e2\n"
+                        "\t0.5 0.5 3/4x\n");
+  // The last line has a bad number: check the happy path without it first.
+  std::istringstream good("# x y z\n0 0 1\n\n   1 0 0.1   # trailing comment\r\n0 1 -2.5e2\n"
+                          "0.5\t0.5 0.75\n");
+  const TS::Scattered_data<K> data = TS::read_xyz<K>(good, "good.xyz");
+  ASSERT_EQ(data.points.size(), 4u);
+  ASSERT_EQ(data.values.size(), 4u);
+  EXPECT_EQ(data.merged_duplicates, 0u);
+  EXPECT_EQ(data.points[1], typename K::Point_2(1, 0));
+  EXPECT_EQ(data.values[1], TS::parse_number<FT>("0.1"));
+  if (is_exact<K>) {
+    EXPECT_EQ(data.values[1] * FT(10), FT(1)); // exact 1/10
+  }
+  EXPECT_EQ(data.values[2], FT(-250));
+  EXPECT_EQ(data.points[3], typename K::Point_2(ratio<K>(1, 2), ratio<K>(1, 2)));
+  EXPECT_EQ(data.values[3], ratio<K>(3, 4));
+  EXPECT_TRUE(throws_with([&] { TS::read_xyz<K>(in, "bad.xyz"); }, {"bad.xyz:6:", "\"3/4x\""}));
+}
+
+TYPED_TEST(ScatteredData, MergesDuplicatesWithTheSameHeight) {
+  using K = TypeParam;
+  std::istringstream in("0 0 1\n1 0 2\n0 1 3\n1 0 2.0\n0 0 1\n0.0 1e0 3\n1 1 4\n");
+  const TS::Scattered_data<K> data = TS::read_xyz<K>(in, "dup.xyz");
+  EXPECT_EQ(data.merged_duplicates, 3u);
+  ASSERT_EQ(data.points.size(), 4u);
+  // First occurrences, in input order.
+  EXPECT_EQ(data.points[0], typename K::Point_2(0, 0));
+  EXPECT_EQ(data.points[1], typename K::Point_2(1, 0));
+  EXPECT_EQ(data.points[2], typename K::Point_2(0, 1));
+  EXPECT_EQ(data.points[3], typename K::Point_2(1, 1));
+  EXPECT_EQ(data.values[3], typename K::FT(4));
+}
+
+TYPED_TEST(ScatteredData, RejectsBadInput) {
+  using K = TypeParam;
+  auto read = [](const std::string& text) {
+    return [text] {
+      std::istringstream in(text);
+      TS::read_xyz<K>(in, "data.xyz");
+    };
+  };
+  EXPECT_TRUE(throws_with(read("0 0 1\n1 0 2\n# c\n0 1 3\n1 1 4\n1 0 5\n"),
+                          {"data.xyz:2", "data.xyz:6", "different heights"}));
+  EXPECT_TRUE(throws_with(read("0 0 1\n1 0 2\n0 0 1\n"), {"2 distinct points", "at least 3"}));
+  EXPECT_TRUE(throws_with(read(""), {"0 distinct points"}));
+  EXPECT_TRUE(throws_with(read("0 0 1\n1 1 2\n2 2 0\n-3 -3 1\n"),
+                          {"all 4 points are collinear: no triangle"}));
+  EXPECT_TRUE(throws_with(read("0 0 1\n1 0 2\n0 1\n"), {"data.xyz:3:", "expected 3 numbers"}));
+  EXPECT_TRUE(throws_with(read("0 0 1 7\n"), {"data.xyz:1:", "found 4 fields"}));
+  EXPECT_TRUE(throws_with(read("0 0 1\n1 nan 2\n"), {"data.xyz:2:", "\"nan\"", "not finite"}));
+  EXPECT_TRUE(throws_with(read("0 0 1\n1 0 -inf\n"), {"data.xyz:2:", "\"-inf\""}));
+  EXPECT_TRUE(throws_with(read("\n\n1e200 0 1\n"), {"data.xyz:3:", "\"1e200\"", "too large"}));
+  EXPECT_TRUE(throws_with(read("0 0 x\n"), {"data.xyz:1:", "\"x\""}));
+}
+
+TYPED_TEST(ScatteredData, DelaunayDomainCarriesTheValues) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  // A 4 x 4 grid plus two more points; z = 2x - y at every point.
+  std::ostringstream text;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      text << i << " " << j << " " << 2 * i - j << "\n";
+  text << "0.5 0.25 0.75\n1.5 2.5 0.5\n";
+  std::istringstream in(text.str());
+  const TS::Scattered_data<K> data = TS::read_xyz<K>(in, "grid.xyz");
+  const auto [domain, values] = TS::delaunay_domain(data);
+  EXPECT_EQ(domain.number_of_vertices(), 18u);
+  ASSERT_EQ(values.size(), 18u);
+  // The convex hull is the square [0,3]^2 with 12 boundary vertices: F = 2V - B - 2.
+  EXPECT_EQ(domain.number_of_boundary_vertices(), 12u);
+  EXPECT_EQ(domain.number_of_faces(), 2u * 18u - 12u - 2u);
+  EXPECT_TRUE(domain.is_simply_connected());
+  for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v) {
+    const FT expected = FT(2) * domain.point(v).x() - domain.point(v).y();
+    EXPECT_EQ(values[v], expected) << "vertex " << v;
+  }
+  // Hand-made data bypass read_xyz's checks; delaunay_domain has its own.
+  TS::Scattered_data<K> bad;
+  bad.points = {{0, 0}, {1, 0}, {0, 1}, {1, 0}};
+  bad.values = {FT(0), FT(1), FT(2), FT(3)};
+  EXPECT_TRUE(throws_with([&] { TS::delaunay_domain(bad); }, {"1 points repeat"}));
+  bad.points = {{0, 0}, {1, 1}, {2, 2}, {3, 3}};
+  EXPECT_TRUE(throws_with([&] { TS::delaunay_domain(bad); }, {"collinear"}));
+  bad.values.pop_back();
+  EXPECT_TRUE(throws_with([&] { TS::delaunay_domain(bad); }, {"4 points but 3 values"}));
+}
+
+// ---------------------------------------------------------------------------------------
+// Meshes through CGAL IO
+// ---------------------------------------------------------------------------------------
+
+template <class K>
+class MeshDomain : public ::testing::Test {};
+TYPED_TEST_SUITE(MeshDomain, Kernels, Kernel_names);
+
+TYPED_TEST(MeshDomain, ReadsOffAndObj) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  Temporary_directory dir;
+  const std::string off = dir.write("square.off", "OFF\n5 4 0\n"
+                                                  "0 0 1\n2 0 2\n2 2 3\n0 2 4\n1 1 0.1\n"
+                                                  "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n");
+  const std::string obj = dir.write("square.OBJ", "# square\nv 0 0 1\nv 2 0 2\nv 2 2 3\n"
+                                                  "v 0 2 4\nv 1 1 0.1\n"
+                                                  "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n");
+  const std::string ply = dir.write("square.ply", "ply\nformat ascii 1.0\nelement vertex 5\n"
+                                                  "property double x\nproperty double y\n"
+                                                  "property double z\nelement face 4\n"
+                                                  "property list uchar int vertex_indices\n"
+                                                  "end_header\n"
+                                                  "0 0 1\n2 0 2\n2 2 3\n0 2 4\n1 1 0.1\n"
+                                                  "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n");
+  // STL stores corners per facet; CGAL merges equal points (numbered by first appearance).
+  std::string stl = "solid square\n";
+  for (const char* facet :
+       {"0 0 1\nvertex 2 0 2\nvertex 1 1 0.1", "2 0 2\nvertex 2 2 3\nvertex 1 1 0.1",
+        "2 2 3\nvertex 0 2 4\nvertex 1 1 0.1", "0 2 4\nvertex 0 0 1\nvertex 1 1 0.1"})
+    stl += std::string("facet normal 0 0 1\nouter loop\nvertex ") + facet + "\nendloop\nendfacet\n";
+  stl = dir.write("square.stl", stl + "endsolid square\n");
+  for (const std::string& path : {off, obj, ply, stl}) {
+    SCOPED_TRACE(path);
+    const auto [domain, heights] = TS::read_mesh_domain<K>(path);
+    EXPECT_EQ(domain.number_of_vertices(), 5u);
+    EXPECT_EQ(domain.number_of_faces(), 4u);
+    EXPECT_EQ(domain.number_of_interior_vertices(), 1u);
+    ASSERT_EQ(heights.size(), 5u);
+    // Coordinates and heights are the file's doubles, exactly.
+    const std::vector<std::pair<typename K::Point_2, FT>> expected{
+        {{0, 0}, FT(1)}, {{2, 0}, FT(2)}, {{2, 2}, FT(3)}, {{0, 2}, FT(4)}, {{1, 1}, FT(0.1)}};
+    for (const auto& [point, z] : expected) {
+      const auto& points = domain.points();
+      const auto at = std::find(points.begin(), points.end(), point);
+      ASSERT_NE(at, points.end());
+      EXPECT_EQ(heights[static_cast<std::size_t>(at - points.begin())], z);
+    }
+    if (path != stl) {
+      // Vertex v of the file is domain vertex v.
+      EXPECT_EQ(domain.point(1), typename K::Point_2(2, 0));
+      EXPECT_EQ(heights[0], FT(1));
+      EXPECT_EQ(heights[3], FT(4));
+    }
+  }
+}
+
+TYPED_TEST(MeshDomain, RejectsBadMeshes) {
+  using K = TypeParam;
+  Temporary_directory dir;
+  auto read = [](const std::string& path) { return [path] { TS::read_mesh_domain<K>(path); }; };
+  const std::string quad = dir.write("quad.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+                                                 "2 0 0\n3 1 4 2\n4 0 1 2 3\n");
+  EXPECT_TRUE(throws_with(read(quad), {quad, "face 1 has 4 vertices", "only triangles"}));
+  // Edge (0, 1) shared by three triangles.
+  const std::string fin = dir.write("fin.off", "OFF\n5 3 0\n0 0 0\n2 0 0\n1 1 0\n1 -1 0\n"
+                                               "1 3 0\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  EXPECT_TRUE(throws_with(read(fin), {fin, "edge (0, 1)", "shared by 3", "non-manifold"}));
+  const std::string flat = dir.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\n"
+                                                 "f 1 2 4\nf 1 2 3\n");
+  EXPECT_TRUE(throws_with(read(flat), {flat, "triangle 1", "zero area"}));
+  const std::string duplicate = dir.write("duplicate.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n"
+                                                           "0 0 5\n3 0 1 2\n3 3 1 2\n");
+  EXPECT_TRUE(throws_with(read(duplicate), {"vertices 0 and 3 are the same point"}));
+  const std::string empty = dir.write("empty.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_TRUE(throws_with(read(empty), {empty, "no face"}));
+  const std::string garbage = dir.write("garbage.off", "this is not a mesh\n");
+  EXPECT_TRUE(throws_with(read(garbage), {garbage, "cannot read"}));
+  const std::string missing = dir.path("missing.off");
+  EXPECT_TRUE(throws_with(read(missing), {missing, "cannot open"}));
+  const std::string unknown = dir.write("mesh.xyzw", "OFF\n");
+  EXPECT_TRUE(throws_with(read(unknown), {unknown, "unsupported mesh file extension", ".xyzw"}));
+  EXPECT_TRUE(throws_with(read(dir.path("noextension")), {"unsupported mesh file extension"}));
+}
+
+// ---------------------------------------------------------------------------------------
+// Constrained domains and the demo data set
+// ---------------------------------------------------------------------------------------
+
+template <class K>
+class ConstrainedDomain : public ::testing::Test {};
+TYPED_TEST_SUITE(ConstrainedDomain, Kernels, Kernel_names);
+
+TYPED_TEST(ConstrainedDomain, SquareWithAHole) {
+  using K = TypeParam;
+  using Point_2 = typename K::Point_2;
+  const std::vector<Point_2> outer{{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}};
+  for (const bool clockwise_hole : {false, true}) {
+    std::vector<Point_2> hole{{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+    if (clockwise_hole)
+      std::reverse(hole.begin(), hole.end());
+    const std::vector<Point_2> extra{{ratio<K>(1, 2), ratio<K>(1, 2)}, {ratio<K>(7, 2), 2}};
+    const auto [domain, input] = TS::constrained_domain<K>({outer, hole}, extra);
+    EXPECT_EQ(domain.number_of_vertices(), 11u);
+    EXPECT_EQ(domain.number_of_boundary_loops(), 2u);
+    EXPECT_EQ(domain.number_of_components(), 1u);
+    EXPECT_FALSE(domain.is_simply_connected());
+    // Annulus: V - E + F = 0.
+    EXPECT_EQ(domain.number_of_vertices() + domain.number_of_faces(), domain.number_of_edges());
+    for (const auto& t : domain.faces()) {
+      const Point_2 centroid =
+          CGAL::centroid(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+      EXPECT_EQ(CGAL::bounded_side_2(hole.begin(), hole.end(), centroid, K()),
+                CGAL::ON_UNBOUNDED_SIDE);
+      EXPECT_EQ(CGAL::bounded_side_2(outer.begin(), outer.end(), centroid, K()),
+                CGAL::ON_BOUNDED_SIDE);
+    }
+    // second[v] indexes the concatenated input points.
+    std::vector<Point_2> all(outer);
+    all.insert(all.end(), hole.begin(), hole.end());
+    all.insert(all.end(), extra.begin(), extra.end());
+    ASSERT_EQ(input.size(), domain.number_of_vertices());
+    std::vector<int> seen(all.size(), 0);
+    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v) {
+      ASSERT_LT(input[v], all.size());
+      EXPECT_EQ(domain.point(v), all[input[v]]);
+      ++seen[input[v]];
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(all.size()));
+  }
+}
+
+TYPED_TEST(ConstrainedDomain, RejectsBadPolygonsAndPoints) {
+  using K = TypeParam;
+  using Point_2 = typename K::Point_2;
+  using Polygons = std::vector<std::vector<Point_2>>;
+  auto build = [](Polygons polygons, std::vector<Point_2> extra = {}) {
+    return [polygons, extra] { TS::constrained_domain<K>(polygons, extra); };
+  };
+  const std::vector<Point_2> square{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  EXPECT_TRUE(throws_with(build({}), {"no boundary polygon"}));
+  EXPECT_TRUE(throws_with(build({{{0, 0}, {1, 0}}}), {"polygon 0", "2 vertices"}));
+  EXPECT_TRUE(throws_with(build({{{0, 0}, {2, 0}, {0, 2}, {2, 2}}}),
+                          {"polygon 0 (the outer boundary) is not simple", "intersect"}));
+  EXPECT_TRUE(throws_with(build({{{0, 0}, {2, 0}, {1, 0}, {1, 1}}}), {"polygon 0", "not simple"}));
+  EXPECT_TRUE(throws_with(build({{{0, 0}, {2, 0}, {1, 0}}}), {"not simple: it folds back"}));
+  EXPECT_TRUE(throws_with(build({{{0, 0}, {1, 0}, {2, 0}}}), {"not simple"}));
+  EXPECT_TRUE(throws_with(build({{{0, 0}, {1, 0}, {1, 0}, {0, 1}}}), {"repeats vertex 1"}));
+  EXPECT_TRUE(throws_with(build({square, {{1, 1}, {3, 1}, {1, 3}, {3, 3}}}),
+                          {"polygon 1 (a hole) is not simple"}));
+  EXPECT_TRUE(throws_with(build({square, {{5, 5}, {6, 5}, {6, 6}}}),
+                          {"polygon 1 (a hole) lies outside the outer boundary"}));
+  EXPECT_TRUE(throws_with(build({square, {{1, 1}, {5, 1}, {1, 2}}}),
+                          {"polygon 0 (the outer boundary) and polygon 1 (a hole) intersect"}));
+  EXPECT_TRUE(throws_with(build({square, {{0, 2}, {1, 1}, {1, 3}}}), {"intersect or touch"}));
+  EXPECT_TRUE(throws_with(build({square,
+                                 {{1, 1}, {3, 1}, {3, 3}, {1, 3}},
+                                 {{ratio<K>(3, 2), ratio<K>(3, 2)}, {2, ratio<K>(3, 2)}, {2, 2}}}),
+                          {"polygon 2 (a hole) lies inside polygon 1 (a hole)"}));
+  const Polygons with_hole{square, {{1, 1}, {3, 1}, {3, 3}, {1, 3}}};
+  EXPECT_TRUE(throws_with(build(with_hole, {{ratio<K>(1, 2), ratio<K>(1, 2)}, {2, 2}}),
+                          {"extra point 1", "(2, 2)", "inside a hole"}));
+  EXPECT_TRUE(throws_with(build(with_hole, {{5, 1}}),
+                          {"extra point 0", "(5, 1)", "outside the outer boundary"}));
+  EXPECT_TRUE(throws_with(build(with_hole, {{2, 0}}), {"extra point 0", "on the boundary"}));
+  EXPECT_TRUE(throws_with(build(with_hole, {{3, 3}}), {"extra point 0", "on the boundary"}));
+}
+
+template <class K>
+class DemoData : public ::testing::Test {};
+TYPED_TEST_SUITE(DemoData, Kernels, Kernel_names);
+
+TYPED_TEST(DemoData, HasAHoleACornerAndDegenerateBoundaryFrames) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  using Point_2 = typename K::Point_2;
+  const auto [domain, heights] = TS::demo_data<K>();
+  EXPECT_GE(domain.number_of_vertices(), 150u);
+  EXPECT_LE(domain.number_of_vertices(), 300u);
+  ASSERT_EQ(heights.size(), domain.number_of_vertices());
+  EXPECT_EQ(domain.number_of_components(), 1u);
+  EXPECT_EQ(domain.number_of_boundary_loops(), 2u);
+  EXPECT_FALSE(domain.is_simply_connected());
+  // No face inside the hole [1/2, 1]^2.
+  const std::vector<Point_2> hole{
+      {ratio<K>(1, 2), ratio<K>(1, 2)}, {1, ratio<K>(1, 2)}, {1, 1}, {ratio<K>(1, 2), 1}};
+  for (const auto& t : domain.faces())
+    EXPECT_NE(CGAL::bounded_side_2(
+                  hole.begin(), hole.end(),
+                  CGAL::centroid(domain.point(t[0]), domain.point(t[1]), domain.point(t[2])), K()),
+              CGAL::ON_BOUNDED_SIDE);
+  // The re-entrant corner (3/2, 3/2) is a boundary vertex whose fan turns more than pi.
+  bool corner_found = false;
+  std::size_t degenerate = 0;
+  for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v) {
+    const auto [begin, end] = domain.neighbours(v);
+    if (domain.point(v) == Point_2(ratio<K>(3, 2), ratio<K>(3, 2))) {
+      corner_found = domain.is_boundary_vertex(v);
+      // The interior angle exceeds pi: some neighbour lies right of the first boundary edge.
+      EXPECT_TRUE(std::any_of(begin, end, [&](std::uint32_t w) {
+        return CGAL::orientation(domain.point(v), domain.point(begin[0]), domain.point(w)) ==
+               CGAL::RIGHT_TURN;
+      }));
+    }
+    // A boundary vertex with one interior edge whose two apexes are collinear with it.
+    if (domain.is_boundary_vertex(v) && domain.degree(v) == 3 &&
+        CGAL::collinear(domain.point(begin[0]), domain.point(v), domain.point(begin[2])))
+      ++degenerate;
+  }
+  EXPECT_TRUE(corner_found);
+  EXPECT_GE(degenerate, 10u);
+  // (1/2, 0) on the bottom side is such a vertex.
+  for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+    if (domain.point(v) == Point_2(ratio<K>(1, 2), 0)) {
+      EXPECT_EQ(domain.degree(v), 3u);
+      const auto begin = domain.neighbours(v).first;
+      EXPECT_TRUE(CGAL::collinear(domain.point(begin[0]), domain.point(v), domain.point(begin[2])));
+      EXPECT_EQ(domain.point(begin[1]), Point_2(ratio<K>(1, 2), ratio<K>(1, 4)));
+    }
+  // Heights: f(0, 0) = 1/2 + 1 / (1 + 4 (81/16 + 9/16)) = 1/2 + 2/47.
+  for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+    if (domain.point(v) == Point_2(0, 0)) {
+      const FT expected = FT(1) / FT(2) + FT(2) / FT(47);
+      EXPECT_TRUE(same_value(heights[v], expected, is_exact<K>, 1e-15));
+    }
+}
+
+TEST(DemoData, BothKernelsBuildTheSameTriangulation) {
+  const auto [inexact, inexact_heights] = TS::demo_data<Epick>();
+  const auto [exact, exact_heights] = TS::demo_data<Exact_kernel>();
+  ASSERT_EQ(inexact.number_of_vertices(), exact.number_of_vertices());
+  EXPECT_EQ(inexact.faces(), exact.faces());
+  for (std::uint32_t v = 0; v < exact.number_of_vertices(); ++v) {
+    // Dyadic coordinates: the double points are the exact ones.
+    EXPECT_EQ(Exact_FT(inexact.point(v).x()), exact.point(v).x());
+    EXPECT_EQ(Exact_FT(inexact.point(v).y()), exact.point(v).y());
+    EXPECT_NEAR(inexact_heights[v], CGAL::to_double(exact_heights[v]), 1e-14);
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Spline files
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+// Random control nets over every face, the patch vertices in a rotated or reversed order
+// of the face so that the file's face lines must follow the patches.
+template <class K, class Value>
+std::vector<TS::Bezier_triangle<K, Value>> random_patches(const TS::Planar_domain<K>& domain,
+                                                          int degree, unsigned seed) {
+  Random_rationals random(seed);
+  std::vector<TS::Bezier_triangle<K, Value>> patches;
+  for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
+    const auto& t = domain.face(f);
+    std::array<std::uint32_t, 3> order = t;
+    if (f % 3 == 1)
+      order = {{t[1], t[2], t[0]}};
+    else if (f % 3 == 2)
+      order = {{t[0], t[2], t[1]}};
+    std::vector<Value> net;
+    for (std::size_t i = 0; i < TS::number_of_control_points(degree); ++i)
+      net.push_back(random.value<K, Value>());
+    patches.emplace_back(degree, domain.point(order[0]), domain.point(order[1]),
+                         domain.point(order[2]), std::move(net));
+  }
+  return patches;
+}
+
+template <class K, class Value>
+void expect_same_spline(const TS::Planar_domain<K>& domain,
+                        const std::vector<TS::Bezier_triangle<K, Value>>& patches,
+                        const TS::Spline_file<K, Value>& read) {
+  ASSERT_EQ(read.domain.points(), domain.points());
+  // The file's faces follow the patches' vertex order, so a face comes back as a rotation
+  // of the original (both counter-clockwise).
+  ASSERT_EQ(read.domain.number_of_faces(), domain.number_of_faces());
+  for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
+    const auto& a = read.domain.face(f);
+    const auto& b = domain.face(f);
+    const bool rotation = (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) ||
+                          (a[0] == b[1] && a[1] == b[2] && a[2] == b[0]) ||
+                          (a[0] == b[2] && a[1] == b[0] && a[2] == b[1]);
+    ASSERT_TRUE(rotation) << "face " << f;
+  }
+  ASSERT_EQ(read.patches.size(), patches.size());
+  for (std::size_t f = 0; f < patches.size(); ++f) {
+    ASSERT_EQ(read.patches[f].degree(), patches[f].degree());
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ(read.patches[f].vertex(i), patches[f].vertex(i));
+    // Bit for bit: == on doubles, exact equality on rationals.
+    EXPECT_TRUE(read.patches[f].control_points() == patches[f].control_points()) << "face " << f;
+  }
+}
+
+} // namespace
+
+template <class K>
+class SplineFile : public ::testing::Test {};
+TYPED_TEST_SUITE(SplineFile, Kernels, Kernel_names);
+
+TYPED_TEST(SplineFile, FunctionalRoundTrip) {
+  using K = TypeParam;
+  const auto [domain, heights] = TS::demo_data<K>();
+  const auto patches = random_patches<K, typename K::FT>(domain, 5, 11);
+  std::stringstream file;
+  TS::write_spline_file(file, domain, patches);
+  const std::string text = file.str();
+  EXPECT_EQ(text.rfind("tspline-spline 1\n", 0), 0u);
+  EXPECT_NE(text.find(is_exact<K> ? "number_type exact\n" : "number_type double\n"),
+            std::string::npos);
+  EXPECT_NE(text.find("dimension 1\n"), std::string::npos);
+  const TS::Spline_file<K> read = TS::read_spline_file<K>(file, "demo.spline");
+  expect_same_spline(domain, patches, read);
+}
+
+TYPED_TEST(SplineFile, ParametricRoundTrip) {
+  using K = TypeParam;
+  using Vector_3 = typename K::Vector_3;
+  std::istringstream xyz("0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0.3 0\n2 0.5 0\n");
+  const auto [domain, values] = TS::delaunay_domain(TS::read_xyz<K>(xyz, "points.xyz"));
+  const auto patches = random_patches<K, Vector_3>(domain, 4, 5);
+  std::stringstream file;
+  TS::write_spline_file(file, domain, patches);
+  EXPECT_NE(file.str().find("dimension 3\n"), std::string::npos);
+  const TS::Spline_file<K, Vector_3> read =
+      TS::read_spline_file<K, Vector_3>(file, "parametric.spline");
+  expect_same_spline(domain, patches, read);
+  // A dimension 3 file cannot be read as heights.
+  std::istringstream again(file.str());
+  EXPECT_TRUE(throws_with([&] { TS::read_spline_file<K>(again, "parametric.spline"); },
+                          {"parametric.spline:4:", "dimension 3", "dimension 1 values"}));
+}
+
+TYPED_TEST(SplineFile, WriterChecksPatches) {
+  using K = TypeParam;
+  const auto data = TS::demo_data<K>();
+  const TS::Planar_domain<K>& domain = data.first; // lambdas cannot capture structured bindings
+  auto patches = random_patches<K, typename K::FT>(domain, 2, 3);
+  std::ostringstream out;
+  auto fewer = patches;
+  fewer.pop_back();
+  EXPECT_TRUE(throws_with([&] { TS::write_spline_file(out, domain, fewer); },
+                          {"255 patches for 256 faces"}));
+  auto swapped = patches;
+  std::swap(swapped[0], swapped[100]);
+  EXPECT_TRUE(throws_with([&] { TS::write_spline_file(out, domain, swapped); },
+                          {"patch 0", "is not a vertex of face 0"}));
+  auto mixed = patches;
+  mixed[7] = mixed[7].elevate_degree();
+  EXPECT_TRUE(
+      throws_with([&] { TS::write_spline_file(out, domain, mixed); }, {"patch 7 has degree 3"}));
+}
+
+TEST(SplineFileConversion, NumberTypesConvertAsDocumented) {
+  const std::string text = "# leading comment\n"
+                           "tspline-spline 1\n"
+                           "degree 1\n"
+                           "dimension 1\n"
+                           "number_type NT\n"
+                           "vertices 3\n"
+                           "0 0\n"
+                           "1 0\n"
+                           "0 0.1\n"
+                           "faces 1\n"
+                           "0 1 2\n"
+                           "patches\n"
+                           "0.1 V 2.675\n"
+                           "end\n";
+  auto with = [&](const std::string& type, const std::string& v) {
+    std::string s = text;
+    s.replace(s.find("NT"), 2, type);
+    s.replace(s.find(" V "), 3, " " + v + " ");
+    return s;
+  };
+  // exact file -> exact kernel: exact; -> double: nearest double.
+  {
+    std::istringstream in(with("exact", "1/3"));
+    const auto read = TS::read_spline_file<Exact_kernel>(in, "e.spline");
+    EXPECT_EQ(read.patches[0].control_points()[0], Exact_FT(1) / Exact_FT(10));
+    EXPECT_EQ(read.patches[0].control_points()[1], Exact_FT(1) / Exact_FT(3));
+    EXPECT_EQ(read.domain.point(2).y(), Exact_FT(1) / Exact_FT(10));
+    std::istringstream in2(with("exact", "1/3"));
+    const auto rounded = TS::read_spline_file<Epick>(in2, "e.spline");
+    EXPECT_EQ(rounded.patches[0].control_points()[0], 0.1);
+    EXPECT_EQ(rounded.patches[0].control_points()[1], 1.0 / 3.0);
+    EXPECT_EQ(rounded.patches[0].control_points()[2], 2.675);
+    EXPECT_EQ(rounded.domain.point(2).y(), 0.1);
+  }
+  // double file -> exact kernel: the doubles, converted exactly.
+  {
+    std::istringstream in(with("double", "0.3"));
+    const auto read = TS::read_spline_file<Exact_kernel>(in, "d.spline");
+    EXPECT_EQ(read.patches[0].control_points()[0], Exact_FT(0.1));
+    EXPECT_EQ(read.patches[0].control_points()[1], Exact_FT(0.3));
+    EXPECT_EQ(read.domain.point(2).y(), Exact_FT(0.1));
+    std::istringstream in2(with("double", "1/3"));
+    EXPECT_TRUE(throws_with([&] { TS::read_spline_file<Exact_kernel>(in2, "d.spline"); },
+                            {"d.spline:13:", "\"1/3\"", "not a decimal number"}));
+  }
+}
+
+TYPED_TEST(SplineFile, MalformedFilesAreRejectedWithTheLine) {
+  using K = TypeParam;
+  // Line numbers:       1                  2          3             4
+  const std::string good = "tspline-spline 1\ndegree 1\ndimension 1\nnumber_type exact\n"
+                           // 5          6     7     8     9
+                           "vertices 4\n0 0\n1 0\n1 1\n0 1\n"
+                           // 10      11       12       13
+                           "faces 2\n0 1 2\n0 2 3\npatches\n"
+                           // 14        15                 16
+                           "1 2 3\n1/2 0.25 -7\nend\n";
+  auto read = [](const std::string& text) {
+    return [text] {
+      std::istringstream in(text);
+      TS::read_spline_file<K>(in, "s.spline");
+    };
+  };
+  auto replace = [&](const std::string& from, const std::string& to) {
+    std::string s = good;
+    const std::size_t at = s.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return s.replace(at, from.size(), to);
+  };
+  {
+    std::istringstream in("# comment\n\n" +
+                          replace("0 1\nfaces", "# the last vertex\n 0 1\n"
+                                                "faces") +
+                          "# trailing comment\n\n");
+    const auto spline = TS::read_spline_file<K>(in, "s.spline");
+    EXPECT_EQ(spline.domain.number_of_faces(), 2u);
+    EXPECT_EQ(spline.patches[1].control_points()[2], typename K::FT(-7));
+  }
+  EXPECT_TRUE(throws_with(read(""), {"s.spline:0:", "unexpected end of file"}));
+  EXPECT_TRUE(throws_with(read(replace("tspline-spline 1", "tspline-splin 1")),
+                          {"s.spline:1:", "not a tspline spline file"}));
+  EXPECT_TRUE(throws_with(read(replace("tspline-spline 1", "tspline-spline 2")),
+                          {"s.spline:1:", "unsupported version 2"}));
+  EXPECT_TRUE(throws_with(read(replace("degree 1\n", "")), {"s.spline:2:", "expected \"degree"}));
+  EXPECT_TRUE(throws_with(read(replace("degree 1", "degree -1")),
+                          {"s.spline:2:", "invalid degree \"-1\""}));
+  EXPECT_TRUE(throws_with(read(replace("degree 1", "degree 1 2")),
+                          {"s.spline:2:", "one value after \"degree\""}));
+  EXPECT_TRUE(
+      throws_with(read(replace("degree 1", "degree 1000")), {"s.spline:2:", "out of range"}));
+  EXPECT_TRUE(throws_with(read(replace("dimension 1", "dimension 3")),
+                          {"s.spline:3:", "dimension 3 control values (parametric)",
+                           "dimension 1 values were requested"}));
+  EXPECT_TRUE(throws_with(read(replace("dimension 1", "dimension 2")),
+                          {"s.spline:3:", "invalid dimension \"2\""}));
+  EXPECT_TRUE(throws_with(read(replace("exact", "float")),
+                          {"s.spline:4:", "invalid number_type \"float\""}));
+  EXPECT_TRUE(
+      throws_with(read(replace("vertices 4\n", "")), {"s.spline:5:", "expected \"vertices ...\""}));
+  EXPECT_TRUE(
+      throws_with(read(replace("vertices 4", "vertices 5")),
+                  {"s.spline:10:", "expected 2 numbers (x y) for vertex 4 of 5", "\"faces 2\""}));
+  EXPECT_TRUE(throws_with(read(replace("1 1\n", "1 1 1\n")),
+                          {"s.spline:8:", "expected 2 numbers (x y) for vertex 2"}));
+  EXPECT_TRUE(throws_with(read(replace("1 1\n", "1 nan\n")), {"s.spline:8:", "\"nan\""}));
+  EXPECT_TRUE(
+      throws_with(read(replace("1 1\n", "1 1e999\n")), {"s.spline:8:", "\"1e999\"", "too large"}));
+  EXPECT_TRUE(throws_with(read(replace("faces 2", "faces x")),
+                          {"s.spline:10:", "invalid face count \"x\""}));
+  EXPECT_TRUE(throws_with(read(replace("0 2 3\n", "0 2 9\n")),
+                          {"s.spline:12:", "uses vertex 9", "only 4 vertices"}));
+  EXPECT_TRUE(throws_with(read(replace("0 2 3\n", "0 2\n")),
+                          {"s.spline:12:", "expected 3 vertex indices"}));
+  EXPECT_TRUE(throws_with(read(replace("0 2 3\n", "0 2 -3\n")),
+                          {"s.spline:12:", "invalid vertex index \"-3\""}));
+  EXPECT_TRUE(throws_with(read(replace("patches\n", "")),
+                          {"s.spline:13:", "expected \"patches\"", "\"1 2 3\""}));
+  EXPECT_TRUE(throws_with(
+      read(replace("1 2 3\n", "1 2\n")),
+      {"s.spline:14:",
+       "expected 3 numbers (3 control values of dimension 1) for the patch of face 0 of 2",
+       "found \"1 2\""}));
+  EXPECT_TRUE(throws_with(read(replace("0.25", "0.2.5")), {"s.spline:15:", "\"0.2.5\""}));
+  EXPECT_TRUE(throws_with(read(replace("1/2", "1/0")), {"s.spline:15:", "\"1/0\""}));
+  EXPECT_TRUE(throws_with(read(replace("end\n", "")), {"unexpected end of file", "\"end\""}));
+  EXPECT_TRUE(
+      throws_with(read(replace("end\n", "finish\n")), {"s.spline:16:", "expected \"end\""}));
+  EXPECT_TRUE(
+      throws_with(read(good + "0 0\n"), {"s.spline:17:", "unexpected content after \"end\""}));
+  // Domain validation errors propagate, prefixed with the source.
+  EXPECT_TRUE(
+      throws_with(read(replace("1 1\n", "2 0\n")), {"s.spline: domain: triangle 0", "zero area"}));
+  EXPECT_TRUE(throws_with(
+      read(replace("faces 2\n0 1 2\n0 2 3\npatches\n1 2 3\n", "faces 1\n0 1 2\npatches\n")),
+      {"s.spline: domain:", "vertex 3", "not used"}));
+}

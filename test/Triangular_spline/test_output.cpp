@@ -1,0 +1,881 @@
+// Tests of the output layer: point location in a planar domain, evaluation at query points,
+// tessellation into a Surface_mesh with normals and curvatures, and mesh files.
+// The patches are one random quintic polynomial expressed over every face (with the
+// vertices listed in varying orders), so every expected value is known exactly.
+
+#include "test_support.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangular_spline/Domain_locator.h>
+#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/evaluate.h>
+#include <CGAL/Triangular_spline/tessellate.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <random>
+#include <string>
+
+using namespace ts_test;
+using TS::Bezier_triangle;
+using TS::Domain_locator;
+using TS::Planar_domain;
+using TS::Polynomial_surface;
+
+namespace {
+
+using Mesh = CGAL::Surface_mesh<Epick::Point_3>;
+using Mesh_vertex = Mesh::Vertex_index;
+using Index = std::uint32_t;
+
+// ---------------------------------------------------------------------------------------
+// Domains
+// ---------------------------------------------------------------------------------------
+
+// cells x cells squares of side 1/2 from (-1, -1), each split by one diagonal whose
+// direction alternates like a chessboard. Dyadic coordinates: exact in both kernels.
+template <class K>
+Planar_domain<K> grid_domain(int cells) {
+  using FT = typename K::FT;
+  std::vector<typename K::Point_2> points;
+  auto id = [cells](int i, int j) { return static_cast<Index>(j * (cells + 1) + i); };
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i)
+      points.emplace_back(FT(i) / FT(2) - FT(1), FT(j) / FT(2) - FT(1));
+  std::vector<std::array<Index, 3>> triangles;
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      const Index a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if ((i + j) % 2 == 0) {
+        triangles.push_back({{a, b, c}});
+        triangles.push_back({{a, c, d}});
+      } else {
+        triangles.push_back({{a, b, d}});
+        triangles.push_back({{b, c, d}});
+      }
+    }
+  return Planar_domain<K>(std::move(points), std::move(triangles));
+}
+
+// The square [0,3]^2 cut into 3x3 unit cells with the centre cell removed: a ring of 16
+// triangles around the square hole [1,2]^2 (two boundary loops).
+template <class K>
+Planar_domain<K> ring_domain() {
+  std::vector<typename K::Point_2> points;
+  for (int j = 0; j <= 3; ++j)
+    for (int i = 0; i <= 3; ++i)
+      points.emplace_back(i, j);
+  auto id = [](int i, int j) { return static_cast<Index>(j * 4 + i); };
+  std::vector<std::array<Index, 3>> triangles;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      if (i == 1 && j == 1)
+        continue;
+      const Index a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      // clockwise on purpose for some cells: the domain reorients them
+      if ((i + j) % 2 == 0) {
+        triangles.push_back({{a, c, b}});
+        triangles.push_back({{a, c, d}});
+      } else {
+        triangles.push_back({{a, b, d}});
+        triangles.push_back({{d, c, b}});
+      }
+    }
+  return Planar_domain<K>(std::move(points), std::move(triangles));
+}
+
+template <class K>
+using Delaunay = CGAL::Delaunay_triangulation_2<K>;
+
+// Delaunay triangulation of random rational points (small denominators).
+template <class K>
+Planar_domain<K> delaunay_domain(Delaunay<K>& dt, unsigned seed, int count) {
+  Random_rationals random(seed);
+  for (int i = 0; i < count; ++i)
+    dt.insert(random.point<K>());
+  std::vector<typename Delaunay<K>::Vertex_handle> handles;
+  return TS::domain_from_triangulation_2<K>(
+      dt, [](typename Delaunay<K>::Face_handle) { return true; }, handles);
+}
+
+// ---------------------------------------------------------------------------------------
+// Patches: one polynomial over every face, listing the face's vertices in the six possible
+// orders in turn; every seventh face gets a patch over a larger triangle (the face scaled
+// by 2 about a vertex), which exercises the path where the patch's vertices do not match.
+// ---------------------------------------------------------------------------------------
+
+template <class K, class Value>
+std::vector<Bezier_triangle<K, Value>> patches_of(const Planar_domain<K>& domain,
+                                                  const Polynomial_surface<K, Value>& polynomial,
+                                                  bool with_foreign_triangles = true) {
+  static const int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1},
+                                   {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  std::vector<Bezier_triangle<K, Value>> patches;
+  for (std::size_t f = 0; f < domain.number_of_faces(); ++f) {
+    const auto& t = domain.face(static_cast<Index>(f));
+    const int* o = orders[f % 6];
+    const auto& r = domain.point(t[o[0]]);
+    const auto& s = domain.point(t[o[1]]);
+    const auto& u = domain.point(t[o[2]]);
+    if (with_foreign_triangles && f % 7 == 3)
+      patches.push_back(polynomial.to_bezier(5, r, r + (s - r) * typename K::FT(2),
+                                             r + (u - r) * typename K::FT(2)));
+    else
+      patches.push_back(polynomial.to_bezier(5, r, s, u));
+  }
+  return patches;
+}
+
+template <class Patches>
+auto source(const Patches& patches) {
+  return [&patches](Index f) -> const typename Patches::value_type& { return patches[f]; };
+}
+
+template <class K>
+std::vector<std::pair<std::string, Planar_domain<K>>> test_domains(Delaunay<K>& dt) {
+  std::vector<std::pair<std::string, Planar_domain<K>>> domains;
+  domains.emplace_back("grid", grid_domain<K>(4));
+  domains.emplace_back("ring", ring_domain<K>());
+  domains.emplace_back("delaunay", delaunay_domain<K>(dt, 11, 60));
+  return domains;
+}
+
+// Random point of face f: rational barycentric weights (a, b, c) / (a + b + c).
+template <class K>
+typename K::Point_2 random_point_in(const Planar_domain<K>& domain, Index f,
+                                    Random_rationals& random) {
+  using FT = typename K::FT;
+  const int a = random.integer(0, 9), b = random.integer(0, 9), c = random.integer(1, 9);
+  const FT sum(a + b + c);
+  const auto& t = domain.face(f);
+  const auto& p = domain.point(t[0]);
+  const auto& q = domain.point(t[1]);
+  const auto& r = domain.point(t[2]);
+  const FT x = (FT(a) * p.x() + FT(b) * q.x() + FT(c) * r.x()) / sum;
+  const FT y = (FT(a) * p.y() + FT(b) * q.y() + FT(c) * r.y()) / sum;
+  return typename K::Point_2(x, y);
+}
+
+template <class K>
+bool in_closed_face(const Planar_domain<K>& domain, Index f, const typename K::Point_2& p) {
+  const auto& t = domain.face(f);
+  for (int i = 0; i < 3; ++i)
+    if (CGAL::orientation(domain.point(t[i]), domain.point(t[(i + 1) % 3]), p) == CGAL::RIGHT_TURN)
+      return false;
+  return true;
+}
+
+template <class K>
+class Output : public ::testing::Test {};
+TYPED_TEST_SUITE(Output, Kernels, Kernel_names);
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------
+// Domain_locator
+// ---------------------------------------------------------------------------------------
+
+TYPED_TEST(Output, LocatorFindsRandomInteriorPoints) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  constexpr bool exact = is_exact<K>;
+  Delaunay<K> dt;
+  Random_rationals random(3);
+  for (const auto& [name, domain] : test_domains<K>(dt)) {
+    SCOPED_TRACE(name);
+    const Domain_locator<K> locator(domain);
+    EXPECT_GE(locator.number_of_buckets(), 1u);
+    for (Index f = 0; f < domain.number_of_faces(); ++f)
+      for (int trial = 0; trial < 5; ++trial) {
+        const typename K::Point_2 p = random_point_in(domain, f, random);
+        // (in double the rounded point may leave f, and the domain if f is on the boundary)
+        if (!in_closed_face(domain, f, p))
+          continue;
+        const auto location = locator.locate(p);
+        ASSERT_TRUE(location.has_value());
+        const Index g = location->face;
+        EXPECT_TRUE(in_closed_face(domain, g, p));
+        const auto& w = location->barycentric;
+        const auto& t = domain.face(g);
+        for (const FT& c : w) {
+          EXPECT_GE(c, FT(0));
+          EXPECT_LE(c, FT(1));
+        }
+        const FT sum = w[0] + w[1] + w[2];
+        const FT x = w[0] * domain.point(t[0]).x() + w[1] * domain.point(t[1]).x() +
+                     w[2] * domain.point(t[2]).x();
+        const FT y = w[0] * domain.point(t[0]).y() + w[1] * domain.point(t[1]).y() +
+                     w[2] * domain.point(t[2]).y();
+        if constexpr (exact) {
+          EXPECT_EQ(sum, FT(1));
+          EXPECT_EQ(typename K::Point_2(x, y), p);
+        } else {
+          // weights from 2x2 determinants of coordinates up to 20: a few dozen ulps
+          const double scale = (std::max)({1.0, std::abs(p.x()), std::abs(p.y())});
+          EXPECT_NEAR(sum, 1.0, 1e-15);
+          EXPECT_NEAR(x, p.x(), 1e-13 * scale);
+          EXPECT_NEAR(y, p.y(), 1e-13 * scale);
+        }
+      }
+  }
+}
+
+TYPED_TEST(Output, LocatorFindsVerticesAndEdgePoints) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  Delaunay<K> dt;
+  for (const auto& [name, domain] : test_domains<K>(dt)) {
+    SCOPED_TRACE(name);
+    const Domain_locator<K> locator(domain);
+    for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+      const auto location = locator.locate(domain.point(v));
+      ASSERT_TRUE(location.has_value());
+      const auto& t = domain.face(location->face);
+      int position = -1;
+      for (int i = 0; i < 3; ++i)
+        if (t[i] == v)
+          position = i;
+      ASSERT_GE(position, 0) << "vertex " << v << " located in a face not incident to it";
+      for (int i = 0; i < 3; ++i) // exactly a unit vector, also in double
+        EXPECT_EQ(location->barycentric[i], FT(i == position ? 1 : 0));
+    }
+    int on_edges = 0;
+    for (Index e = 0; e < domain.number_of_edges(); ++e) {
+      const auto& a = domain.point(domain.edge(e)[0]);
+      const auto& b = domain.point(domain.edge(e)[1]);
+      for (int k = 1; k <= 3; ++k) {
+        const FT s = FT(k) / FT(4);
+        const FT x = a.x() + s * (b.x() - a.x()), y = a.y() + s * (b.y() - a.y());
+        const typename K::Point_2 p(x, y);
+        // with double, (a + s(b - a)) may round off the edge; test only points on it
+        if (!CGAL::collinear(a, b, p))
+          continue;
+        ++on_edges;
+        const auto location = locator.locate(p);
+        ASSERT_TRUE(location.has_value());
+        const auto& ef = domain.edge_faces(e);
+        ASSERT_TRUE(location->face == ef[0] || location->face == ef[1]);
+        // the coordinate of the vertex opposite the edge is exactly zero
+        const Index opposite = domain.opposite_vertex(location->face, e);
+        const auto& t = domain.face(location->face);
+        for (int i = 0; i < 3; ++i)
+          if (t[i] == opposite) {
+            EXPECT_EQ(location->barycentric[i], FT(0));
+          }
+      }
+    }
+    EXPECT_GT(on_edges, 0);
+  }
+}
+
+TYPED_TEST(Output, LocatorRejectsOutsidePointsAndHoles) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  using Point_2 = typename K::Point_2;
+  // named FT arguments: gmpxx expressions must not reach the point constructor
+  const auto pt = [](const FT& x, const FT& y) { return Point_2(x, y); };
+  {
+    const Planar_domain<K> grid = grid_domain<K>(4); // [-1, 1]^2
+    const Domain_locator<K> locator(grid);
+    for (const Point_2& p : {pt(-100, 0), pt(0, 1e6), pt(FT(-9) / FT(8), 0),
+                             pt(FT(1) + FT(1) / FT(1 << 20), FT(1) / FT(3)),
+                             pt(FT(1) / FT(3), FT(-1) - FT(1) / FT(1 << 30))})
+      EXPECT_FALSE(locator.locate(p).has_value()) << p;
+    for (const Point_2& p : {pt(-1, -1), pt(1, FT(1) / FT(3)), pt(0, 1)})
+      EXPECT_TRUE(locator.locate(p).has_value()) << p;
+  }
+  {
+    const Planar_domain<K> ring = ring_domain<K>(); // [0,3]^2 minus the open (1,2)^2
+    const Domain_locator<K> locator(ring);
+    const FT tiny = FT(1) / FT(1 << 20);
+    for (const Point_2& p :
+         {pt(FT(3) / FT(2), FT(3) / FT(2)), pt(1 + tiny, 2 - tiny), pt(2 - tiny, 1 + tiny),
+          pt(FT(3) / FT(2), 1 + tiny), pt(-1, 1), pt(3 + tiny, 3)})
+      EXPECT_FALSE(locator.locate(p).has_value()) << p;
+    // the border of the hole belongs to the domain
+    for (const Point_2& p : {pt(1, FT(3) / FT(2)), pt(2, 2), pt(FT(7) / FT(4), 1),
+                             pt(1 - tiny, FT(3) / FT(2)), pt(3, 3)})
+      EXPECT_TRUE(locator.locate(p).has_value()) << p;
+  }
+  {
+    // Convex hull of random points: agree with the triangulation's own point location.
+    Delaunay<K> dt;
+    const Planar_domain<K> domain = delaunay_domain<K>(dt, 5, 40);
+    const Domain_locator<K> locator(domain);
+    Random_rationals random(17);
+    int inside = 0, outside = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+      const FT x = random.rational<FT>(24, 7), y = random.rational<FT>(24, 7);
+      const Point_2 p(x, y);
+      typename Delaunay<K>::Locate_type type;
+      int li;
+      dt.locate(p, type, li);
+      const bool expected =
+          type == Delaunay<K>::VERTEX || type == Delaunay<K>::EDGE || type == Delaunay<K>::FACE;
+      const auto location = locator.locate(p);
+      EXPECT_EQ(location.has_value(), expected) << p;
+      (expected ? inside : outside) += 1;
+      if (location) {
+        EXPECT_TRUE(in_closed_face(domain, location->face, p));
+      }
+    }
+    EXPECT_GT(inside, 100);
+    EXPECT_GT(outside, 100);
+  }
+}
+
+TYPED_TEST(Output, LocatorRejectsNonFiniteQueries) {
+  using K = TypeParam;
+  if constexpr (!is_exact<K>) {
+    const Planar_domain<K> grid = grid_domain<K>(4);
+    const Domain_locator<K> locator(grid);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const auto& p : {typename K::Point_2(nan, 0), typename K::Point_2(0, nan),
+                          typename K::Point_2(inf, 0), typename K::Point_2(0, -inf)})
+      EXPECT_FALSE(locator.locate(p).has_value());
+  } else {
+    GTEST_SKIP() << "exact rationals have no NaN or infinity";
+  }
+}
+
+TYPED_TEST(Output, LocatorStaysLinearOnAFan) {
+  // 400 long thin triangles around the centre of [-1, 1]^2: each one's bounding box covers
+  // a large part of the domain, so the grid must be coarsened to keep memory linear.
+  using K = TypeParam;
+  using FT = typename K::FT;
+  const int per_side = 100;
+  std::vector<typename K::Point_2> points{typename K::Point_2(0, 0)};
+  for (int side = 0; side < 4; ++side)
+    for (int k = 0; k < per_side; ++k) {
+      const FT s = FT(2 * k) / FT(per_side) - FT(1); // -1 .. 1 - 2/per_side
+      switch (side) {
+      case 0:
+        points.emplace_back(s, -1);
+        break;
+      case 1:
+        points.emplace_back(1, s);
+        break;
+      case 2:
+        points.emplace_back(-s, 1);
+        break;
+      default:
+        points.emplace_back(-1, -s);
+        break;
+      }
+    }
+  std::vector<std::array<Index, 3>> triangles;
+  const Index ring = static_cast<Index>(points.size() - 1);
+  for (Index i = 0; i < ring; ++i)
+    triangles.push_back({{0, 1 + i, 1 + (i + 1) % ring}});
+  const Planar_domain<K> fan(points, triangles);
+  const Domain_locator<K> locator(fan);
+  EXPECT_LE(locator.number_of_entries(), 8 * fan.number_of_faces() + 16);
+  Random_rationals random(23);
+  for (int trial = 0; trial < 500; ++trial) {
+    const Index f = static_cast<Index>(random.integer(0, ring - 1));
+    const typename K::Point_2 p = random_point_in(fan, f, random);
+    const auto location = locator.locate(p);
+    ASSERT_TRUE(location.has_value());
+    EXPECT_TRUE(in_closed_face(fan, location->face, p));
+  }
+  EXPECT_TRUE(locator.locate(typename K::Point_2(0, 0)).has_value());
+  EXPECT_FALSE(locator.locate(typename K::Point_2(FT(3) / FT(2), 0)).has_value());
+}
+
+TEST(Locator, LazyExactKernelWithRoundedCoordinates) {
+  // Epeck's to_double is not monotone, so the bucket boxes are widened; coordinates in
+  // thirds round in double, and points on edges and at vertices must still be found.
+  using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+  using FT = Epeck::FT;
+  const int cells = 6;
+  std::vector<Epeck::Point_2> points;
+  for (int j = 0; j <= cells; ++j)
+    for (int i = 0; i <= cells; ++i)
+      points.emplace_back(FT(i) / FT(3), FT(j) / FT(3));
+  std::vector<std::array<Index, 3>> triangles;
+  auto id = [](int i, int j) { return static_cast<Index>(j * (cells + 1) + i); };
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      triangles.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
+      triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
+    }
+  const Planar_domain<Epeck> domain(points, triangles);
+  const Domain_locator<Epeck> locator(domain);
+  for (Index v = 0; v < domain.number_of_vertices(); ++v)
+    EXPECT_TRUE(locator.locate(domain.point(v)).has_value());
+  for (Index e = 0; e < domain.number_of_edges(); ++e) {
+    const auto location = locator.locate(
+        CGAL::midpoint(domain.point(domain.edge(e)[0]), domain.point(domain.edge(e)[1])));
+    ASSERT_TRUE(location.has_value());
+    EXPECT_TRUE(location->face == domain.edge_faces(e)[0] ||
+                location->face == domain.edge_faces(e)[1]);
+  }
+  EXPECT_FALSE(locator.locate(Epeck::Point_2(FT(-1) / FT(3 << 20), 1)).has_value());
+  EXPECT_FALSE(locator.locate(Epeck::Point_2(1, FT(2) + FT(1) / FT(3 << 20))).has_value());
+}
+
+// ---------------------------------------------------------------------------------------
+// Evaluation
+// ---------------------------------------------------------------------------------------
+
+TYPED_TEST(Output, EvaluateFunctionalReproducesThePolynomial) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  using Point_2 = typename K::Point_2;
+  constexpr bool exact = is_exact<K>;
+  Delaunay<K> dt;
+  Random_rationals random(7);
+  const Polynomial_surface<K> polynomial = random.polynomial<K>(5);
+  for (const auto& [name, domain] : test_domains<K>(dt)) {
+    SCOPED_TRACE(name);
+    const Domain_locator<K> locator(domain);
+    const auto patches = patches_of(domain, polynomial);
+    std::vector<Point_2> queries;
+    std::vector<bool> inside;
+    for (Index f = 0; f < domain.number_of_faces(); ++f) {
+      queries.push_back(random_point_in(domain, f, random));
+      inside.push_back(true);
+    }
+    for (const Point_2& p : domain.points()) {
+      queries.push_back(p);
+      inside.push_back(true);
+    }
+    const FT half = FT(3) / FT(2);
+    for (const Point_2& p : {Point_2(-50, 0), Point_2(0, 50), Point_2(half, half)})
+      if (!locator.locate(p)) {
+        queries.push_back(p);
+        inside.push_back(false);
+      }
+    const std::vector<double> values =
+        TS::evaluate_functional(domain, locator, source(patches), queries);
+    const auto exact_values = TS::evaluate_at(domain, locator, source(patches), queries);
+    ASSERT_EQ(values.size(), queries.size());
+    ASSERT_EQ(exact_values.size(), queries.size());
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      if (!inside[q]) {
+        EXPECT_TRUE(std::isnan(values[q]));
+        EXPECT_FALSE(exact_values[q].has_value());
+        continue;
+      }
+      const FT expected = polynomial.evaluate(queries[q]);
+      const double e = CGAL::to_double(expected);
+      ASSERT_TRUE(exact_values[q].has_value());
+      // double: de Casteljau on values of size ~1e3 at points of size ~3 (stated tolerance)
+      const double tolerance = exact ? 1e-12 : 1e-9;
+      EXPECT_LE(std::abs(values[q] - e), tolerance * (std::max)(1.0, std::abs(e)))
+          << "query " << q << " value " << values[q] << " expected " << e;
+      EXPECT_TRUE(
+          same_value(*exact_values[q], expected, exact, 1e-9, (std::max)(1.0, std::abs(e))));
+    }
+    // the one-point overload agrees
+    EXPECT_EQ(TS::evaluate_at(domain, locator, source(patches), queries.front()).has_value(), true);
+    EXPECT_FALSE(TS::evaluate_at(domain, locator, source(patches), Point_2(-50, -50)).has_value());
+  }
+}
+
+TYPED_TEST(Output, EvaluateAtParametricPatches) {
+  using K = TypeParam;
+  using Vector_3 = typename K::Vector_3;
+  constexpr bool exact = is_exact<K>;
+  Random_rationals random(9);
+  const Polynomial_surface<K, Vector_3> polynomial = random.polynomial<K, Vector_3>(5);
+  const Planar_domain<K> domain = grid_domain<K>(3);
+  const Domain_locator<K> locator(domain);
+  const auto patches = patches_of(domain, polynomial);
+  std::vector<typename K::Point_2> queries;
+  for (Index f = 0; f < domain.number_of_faces(); ++f)
+    queries.push_back(random_point_in(domain, f, random));
+  queries.emplace_back(5, 5);
+  // a patch source returning by value works as well
+  const auto by_value = [&patches](Index f) { return patches[f]; };
+  const auto values = TS::evaluate_at(domain, locator, by_value, queries);
+  for (std::size_t q = 0; q + 1 < queries.size(); ++q) {
+    ASSERT_TRUE(values[q].has_value());
+    const Vector_3 expected = polynomial.evaluate(queries[q]);
+    EXPECT_TRUE(same_value(*values[q], expected, exact, 1e-9, 1e3));
+  }
+  EXPECT_FALSE(values.back().has_value());
+}
+
+// ---------------------------------------------------------------------------------------
+// Tessellation
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+std::size_t border_halfedges(const Mesh& mesh) {
+  std::size_t count = 0;
+  for (auto h : mesh.halfedges())
+    if (mesh.is_border(h))
+      ++count;
+  return count;
+}
+
+std::array<double, 3> face_normal(const Mesh& mesh, Mesh::Face_index f) {
+  std::array<Epick::Point_3, 3> p;
+  int i = 0;
+  for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+    p[i++] = mesh.point(v);
+  const Epick::Vector_3 n = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
+  return {{n.x(), n.y(), n.z()}};
+}
+
+// Checks shared by all tessellations: counts, validity, border, orientation.
+template <class K>
+void check_mesh_structure(const Planar_domain<K>& domain, int levels, const Mesh& mesh,
+                          const TS::Tessellation_statistics& statistics) {
+  const std::size_t n = std::size_t(1) << levels;
+  const std::size_t V = domain.number_of_vertices(), E = domain.number_of_edges(),
+                    F = domain.number_of_faces();
+  EXPECT_EQ(mesh.number_of_vertices(), V + E * (n - 1) + F * (n - 1) * (n - 2) / 2);
+  EXPECT_EQ(mesh.number_of_faces(), F * n * n);
+  EXPECT_EQ(statistics.vertices, mesh.number_of_vertices());
+  EXPECT_EQ(statistics.faces, mesh.number_of_faces());
+  EXPECT_GE(statistics.seconds, 0.0);
+  EXPECT_TRUE(mesh.is_valid(false));
+  EXPECT_EQ(border_halfedges(mesh), domain.number_of_boundary_edges() * n);
+  for (auto v : mesh.vertices())
+    EXPECT_FALSE(mesh.is_isolated(v));
+  // the first V mesh vertices are the domain vertices
+  for (Index v = 0; v < V; ++v) {
+    const Epick::Point_3& p = mesh.point(Mesh_vertex(v));
+    EXPECT_EQ(p.x(), CGAL::to_double(domain.point(v).x()));
+    EXPECT_EQ(p.y(), CGAL::to_double(domain.point(v).y()));
+  }
+}
+
+} // namespace
+
+TYPED_TEST(Output, TessellateFunctionalMatchesThePolynomial) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  constexpr bool exact = is_exact<K>;
+  Delaunay<K> dt;
+  Random_rationals random(13);
+  const Polynomial_surface<K> polynomial = random.polynomial<K>(5);
+  const Polynomial_surface<K> fx = polynomial.derivative(1, 0), fy = polynomial.derivative(0, 1),
+                              fxx = polynomial.derivative(2, 0), fxy = polynomial.derivative(1, 1),
+                              fyy = polynomial.derivative(0, 2);
+  for (const auto& [name, domain] : test_domains<K>(dt)) {
+    const auto patches = patches_of(domain, polynomial);
+    for (int levels = 0; levels <= (exact ? 2 : 3); ++levels) {
+      SCOPED_TRACE(name + " level " + std::to_string(levels));
+      Mesh mesh;
+      const TS::Tessellation_statistics statistics =
+          TS::tessellate(domain, source(patches), levels, mesh);
+      check_mesh_structure(domain, levels, mesh, statistics);
+      auto [normals, has_normals] = mesh.property_map<Mesh_vertex, Epick::Vector_3>("v:normal");
+      auto [gaussian, has_gaussian] =
+          mesh.property_map<Mesh_vertex, double>("v:gaussian_curvature");
+      auto [mean, has_mean] = mesh.property_map<Mesh_vertex, double>("v:mean_curvature");
+      ASSERT_TRUE(has_normals && has_gaussian && has_mean);
+      const Domain_locator<K> locator(domain);
+      for (auto v : mesh.vertices()) {
+        const Epick::Point_3& p = mesh.point(v);
+        // the mesh coordinates are exact dyadic rationals: evaluate exactly there
+        const typename K::Point_2 xy(FT(p.x()), FT(p.y()));
+        // (the Delaunay domain's rational vertices are rounded, possibly off the domain)
+        if (name != "delaunay") {
+          ASSERT_TRUE(locator.locate(xy).has_value()) << "vertex off the domain: " << p;
+        }
+        const FT z = polynomial.evaluate(xy);
+        const double scale = (std::max)(1.0, std::abs(CGAL::to_double(z)));
+        EXPECT_NEAR(p.z(), CGAL::to_double(z), 1e-9 * scale) << p;
+        // analytic graph normal (-F_x, -F_y, 1) / |.|, and curvatures of a graph
+        const double gx = CGAL::to_double(fx.evaluate(xy)), gy = CGAL::to_double(fy.evaluate(xy));
+        const double hxx = CGAL::to_double(fxx.evaluate(xy)),
+                     hxy = CGAL::to_double(fxy.evaluate(xy)),
+                     hyy = CGAL::to_double(fyy.evaluate(xy));
+        const double w = 1 + gx * gx + gy * gy, root = std::sqrt(w);
+        const Epick::Vector_3& normal = normals[v];
+        EXPECT_NEAR(normal.squared_length(), 1.0, 1e-12);
+        EXPECT_NEAR(normal.x(), -gx / root, 1e-9);
+        EXPECT_NEAR(normal.y(), -gy / root, 1e-9);
+        EXPECT_NEAR(normal.z(), 1 / root, 1e-9);
+        const double K_expected = (hxx * hyy - hxy * hxy) / (w * w);
+        const double H_expected =
+            ((1 + gy * gy) * hxx - 2 * gx * gy * hxy + (1 + gx * gx) * hyy) / (2 * w * root);
+        // surface_curvature() forms EG - F^2 = 1 + |grad F|^2 from terms of size
+        // |grad F|^4, which costs about w ulps: the tolerance grows with the slope
+        const double relative = 1e-9 + 1e-14 * w;
+        EXPECT_NEAR(gaussian[v], K_expected, relative * (std::max)(1.0, std::abs(K_expected)));
+        EXPECT_NEAR(mean[v], H_expected, relative * (std::max)(1.0, std::abs(H_expected)));
+      }
+      // counter-clockwise domain triangles give upward faces
+      for (auto f : mesh.faces())
+        EXPECT_GT(face_normal(mesh, f)[2], 0.0);
+    }
+  }
+}
+
+TYPED_TEST(Output, TessellateParametricEnneper) {
+  using K = TypeParam;
+  using Vector_3 = typename K::Vector_3;
+  const Polynomial_surface<K, Vector_3> enneper = TS::enneper_surface<K>();
+  const Polynomial_surface<K, Vector_3> du = enneper.derivative(1, 0),
+                                        dv = enneper.derivative(0, 1);
+  const Planar_domain<K> domain = grid_domain<K>(is_exact<K> ? 2 : 4);
+  const auto patches = patches_of(domain, enneper);
+  const int levels = 2;
+  Mesh mesh;
+  const auto statistics = TS::tessellate(domain, source(patches), levels, mesh);
+  // the first V vertices are at F(domain vertex), not at the domain vertex: check counts only
+  const std::size_t n = 4;
+  EXPECT_EQ(statistics.vertices, domain.number_of_vertices() + domain.number_of_edges() * (n - 1) +
+                                     domain.number_of_faces() * (n - 1) * (n - 2) / 2);
+  EXPECT_EQ(statistics.faces, domain.number_of_faces() * n * n);
+  EXPECT_TRUE(mesh.is_valid(false));
+  EXPECT_EQ(border_halfedges(mesh), domain.number_of_boundary_edges() * n);
+  auto normals = mesh.property_map<Mesh_vertex, Epick::Vector_3>("v:normal").first;
+  // Enneper's surface is minimal: mean curvature zero
+  auto mean = mesh.property_map<Mesh_vertex, double>("v:mean_curvature").first;
+  // Recover each vertex's parameter from the numbering: domain vertices come first.
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    const typename K::Point_2& uv = domain.point(v);
+    const Vector_3 expected = enneper.evaluate(uv);
+    const Epick::Point_3& p = mesh.point(Mesh_vertex(v));
+    EXPECT_NEAR(p.x(), CGAL::to_double(expected.x()), 1e-12);
+    EXPECT_NEAR(p.y(), CGAL::to_double(expected.y()), 1e-12);
+    EXPECT_NEAR(p.z(), CGAL::to_double(expected.z()), 1e-12);
+    const Vector_3 n_exact = CGAL::cross_product(du.evaluate(uv), dv.evaluate(uv));
+    const double length = std::sqrt(CGAL::to_double(n_exact.squared_length()));
+    const Epick::Vector_3& normal = normals[Mesh_vertex(v)];
+    EXPECT_NEAR(normal.x(), CGAL::to_double(n_exact.x()) / length, 1e-9);
+    EXPECT_NEAR(normal.y(), CGAL::to_double(n_exact.y()) / length, 1e-9);
+    EXPECT_NEAR(normal.z(), CGAL::to_double(n_exact.z()) / length, 1e-9);
+  }
+  for (auto v : mesh.vertices()) {
+    EXPECT_NEAR(normals[v].squared_length(), 1.0, 1e-12);
+    EXPECT_NEAR(mean[v], 0.0, 1e-9);
+  }
+  // faces agree with the normals (Enneper is regular and embedded on [-1, 1]^2)
+  for (auto f : mesh.faces()) {
+    const auto nf = face_normal(mesh, f);
+    const auto v = mesh.target(mesh.halfedge(f));
+    EXPECT_GT(nf[0] * normals[v].x() + nf[1] * normals[v].y() + nf[2] * normals[v].z(), 0.0);
+  }
+}
+
+TYPED_TEST(Output, TessellateAgreesWithSurfaceCurvatureForAnyDegree) {
+  // One triangle, patch vertices in another order; degrees 0..6 exercise every branch of
+  // the shared-pyramid derivatives, which must agree with surface_curvature().
+  using K = TypeParam;
+  using FT = typename K::FT;
+  using Vector_3 = typename K::Vector_3;
+  using Point_2 = typename K::Point_2;
+  const std::vector<Point_2> corners{Point_2(FT(-1) / FT(2), 0), Point_2(2, FT(1) / FT(4)),
+                                     Point_2(FT(1) / FT(8), FT(3) / FT(2))};
+  const Planar_domain<K> domain(corners, {{{0, 1, 2}}});
+  Random_rationals random(31);
+  const int levels = is_exact<K> ? 2 : 3;
+  auto near = [](double a, double b, double tolerance) {
+    return std::abs(a - b) <= tolerance * (std::max)(1.0, std::abs(b));
+  };
+  for (int degree = 0; degree <= 6; ++degree) {
+    SCOPED_TRACE("degree " + std::to_string(degree));
+    const std::vector<Bezier_triangle<K>> functional{
+        random.polynomial<K>(degree).to_bezier(degree, corners[2], corners[0], corners[1])};
+    const std::vector<Bezier_triangle<K, Vector_3>> parametric{
+        random.polynomial<K, Vector_3>(degree).to_bezier(degree, corners[1], corners[0],
+                                                         corners[2])};
+    for (int kind = 0; kind < 2; ++kind) {
+      Mesh mesh;
+      if (kind == 0)
+        TS::tessellate(domain, source(functional), levels, mesh);
+      else
+        TS::tessellate(domain, source(parametric), levels, mesh);
+      const auto normals = mesh.property_map<Mesh_vertex, Epick::Vector_3>("v:normal").first;
+      const auto gaussian = mesh.property_map<Mesh_vertex, double>("v:gaussian_curvature").first;
+      const auto mean = mesh.property_map<Mesh_vertex, double>("v:mean_curvature").first;
+      // the grid points in the tessellation's numbering: corners, edges (lo -> hi), interior
+      std::vector<Point_2> grid_points(domain.points());
+      const std::size_t n = std::size_t(1) << levels;
+      for (Index e = 0; e < domain.number_of_edges(); ++e)
+        for (std::size_t t = 1; t < n; ++t) {
+          const Point_2& a = domain.point(domain.edge(e)[0]);
+          const Point_2& b = domain.point(domain.edge(e)[1]);
+          const FT s = FT(static_cast<int>(t)) / FT(static_cast<int>(n));
+          const FT x = a.x() + s * (b.x() - a.x()), y = a.y() + s * (b.y() - a.y());
+          grid_points.emplace_back(x, y);
+        }
+      const auto& face = domain.face(0);
+      for (std::size_t i = 1; i < n; ++i)
+        for (std::size_t j = 1; i + j < n; ++j) {
+          const FT wi = FT(static_cast<int>(i)) / FT(static_cast<int>(n));
+          const FT wj = FT(static_cast<int>(j)) / FT(static_cast<int>(n));
+          const FT wk = FT(1) - wi - wj;
+          const FT x = wi * domain.point(face[0]).x() + wj * domain.point(face[1]).x() +
+                       wk * domain.point(face[2]).x();
+          const FT y = wi * domain.point(face[0]).y() + wj * domain.point(face[1]).y() +
+                       wk * domain.point(face[2]).y();
+          grid_points.emplace_back(x, y);
+        }
+      ASSERT_EQ(grid_points.size(), mesh.number_of_vertices());
+      for (std::size_t v = 0; v < grid_points.size(); ++v) {
+        const Mesh_vertex mv(static_cast<Mesh::size_type>(v));
+        const Point_2& p = grid_points[v];
+        const TS::Surface_curvature expected = kind == 0 ? TS::surface_curvature(functional[0], p)
+                                                         : TS::surface_curvature(parametric[0], p);
+        const Epick::Point_3& position = mesh.point(mv);
+        if (kind == 0) {
+          EXPECT_EQ(position.x(), CGAL::to_double(p.x()));
+          EXPECT_EQ(position.y(), CGAL::to_double(p.y()));
+          EXPECT_TRUE(near(position.z(), CGAL::to_double(functional[0].evaluate(p)), 1e-12));
+        } else {
+          const Vector_3 value = parametric[0].evaluate(p);
+          EXPECT_TRUE(near(position.x(), CGAL::to_double(value.x()), 1e-12));
+          EXPECT_TRUE(near(position.y(), CGAL::to_double(value.y()), 1e-12));
+          EXPECT_TRUE(near(position.z(), CGAL::to_double(value.z()), 1e-12));
+        }
+        if (!expected.regular) { // degree 0 parametric: a point, no normal
+          EXPECT_EQ(normals[mv], Epick::Vector_3(0, 0, 0));
+          EXPECT_TRUE(std::isnan(gaussian[mv]) && std::isnan(mean[mv]));
+          continue;
+        }
+        EXPECT_NEAR(normals[mv].x(), expected.normal[0], 1e-12);
+        EXPECT_NEAR(normals[mv].y(), expected.normal[1], 1e-12);
+        EXPECT_NEAR(normals[mv].z(), expected.normal[2], 1e-12);
+        EXPECT_TRUE(near(gaussian[mv], expected.gaussian, 1e-9))
+            << gaussian[mv] << " vs " << expected.gaussian;
+        EXPECT_TRUE(near(mean[mv], expected.mean, 1e-9)) << mean[mv] << " vs " << expected.mean;
+        if (degree <= 1) {
+          EXPECT_EQ(gaussian[mv], 0.0);
+          EXPECT_EQ(mean[mv], 0.0);
+        }
+      }
+    }
+  }
+}
+
+TYPED_TEST(Output, TessellateRejectsBadLevels) {
+  using K = TypeParam;
+  const Planar_domain<K> domain = grid_domain<K>(1);
+  Random_rationals random(1);
+  const auto patches = patches_of(domain, random.polynomial<K>(5));
+  Mesh mesh;
+  EXPECT_THROW(TS::tessellate(domain, source(patches), -1, mesh), TS::Invalid_input);
+  EXPECT_THROW(TS::tessellate(domain, source(patches), 11, mesh), TS::Invalid_input);
+  // level 0 gives the domain triangles themselves
+  TS::tessellate(domain, source(patches), 0, mesh);
+  EXPECT_EQ(mesh.number_of_faces(), domain.number_of_faces());
+  EXPECT_EQ(mesh.number_of_vertices(), domain.number_of_vertices());
+}
+
+TEST(Tessellate, ReplacesThePreviousMeshContent) {
+  const Planar_domain<Epick> domain = grid_domain<Epick>(2);
+  Random_rationals random(2);
+  const auto patches = patches_of(domain, random.polynomial<Epick>(5));
+  Mesh mesh;
+  TS::tessellate(domain, source(patches), 2, mesh);
+  const auto statistics = TS::tessellate(domain, source(patches), 1, mesh);
+  EXPECT_EQ(mesh.number_of_faces(), domain.number_of_faces() * 4);
+  EXPECT_EQ(statistics.faces, mesh.number_of_faces());
+  EXPECT_TRUE(mesh.is_valid(false));
+}
+
+// ---------------------------------------------------------------------------------------
+// Writing meshes
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+class Temporary_directory {
+public:
+  Temporary_directory() {
+    m_path = std::filesystem::temp_directory_path() /
+             ("ts_test_output_" + std::to_string(std::random_device{}()));
+    std::filesystem::create_directories(m_path);
+  }
+  ~Temporary_directory() {
+    std::error_code ignored;
+    std::filesystem::remove_all(m_path, ignored);
+  }
+  std::string file(const std::string& name) const { return (m_path / name).string(); }
+
+private:
+  std::filesystem::path m_path;
+};
+
+Mesh sample_mesh() {
+  const Planar_domain<Epick> domain = ring_domain<Epick>();
+  Random_rationals random(4);
+  const auto patches = patches_of(domain, random.polynomial<Epick>(5));
+  Mesh mesh;
+  TS::tessellate(domain, source(patches), 2, mesh);
+  return mesh;
+}
+
+} // namespace
+
+TEST(WriteMesh, EachFormatReadsBack) {
+  const Mesh mesh = sample_mesh();
+  const auto normals = mesh.property_map<Mesh_vertex, Epick::Vector_3>("v:normal").first;
+  Temporary_directory directory;
+  for (const std::string name : {"mesh.ply", "mesh.off", "mesh.obj", "MESH.PLY", "a.b/mesh.Off"}) {
+    SCOPED_TRACE(name);
+    const std::string path = directory.file(name);
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    TS::write_mesh(path, mesh);
+    Mesh back;
+    ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, back));
+    EXPECT_EQ(back.number_of_vertices(), mesh.number_of_vertices());
+    EXPECT_EQ(back.number_of_faces(), mesh.number_of_faces());
+    EXPECT_TRUE(back.is_valid(false));
+    // binary PLY and 17-digit ASCII keep every double
+    for (auto v : mesh.vertices())
+      EXPECT_EQ(back.point(v), mesh.point(v));
+  }
+  {
+    // the PLY file carries the normals and the curvatures (Surface_mesh's own reader)
+    std::ifstream in(directory.file("mesh.ply"), std::ios::binary);
+    CGAL::IO::set_mode(in, CGAL::IO::BINARY);
+    Mesh back;
+    ASSERT_TRUE(CGAL::IO::read_PLY(in, back));
+    auto [back_normals, found] = back.property_map<Mesh_vertex, Epick::Vector_3>("v:normal");
+    ASSERT_TRUE(found);
+    auto [back_mean, found_mean] = back.property_map<Mesh_vertex, double>("v:mean_curvature");
+    EXPECT_TRUE(found_mean);
+    const auto mean = mesh.property_map<Mesh_vertex, double>("v:mean_curvature").first;
+    for (auto v : mesh.vertices()) {
+      EXPECT_EQ(back_normals[v], normals[v]);
+      if (found_mean) {
+        EXPECT_EQ(back_mean[v], mean[v]);
+      }
+    }
+  }
+  {
+    // OFF is written as NOFF, OBJ with one vn line per vertex
+    std::ifstream off(directory.file("mesh.off"));
+    std::string header;
+    off >> header;
+    EXPECT_EQ(header, "NOFF");
+    std::ifstream obj(directory.file("mesh.obj"));
+    std::size_t vn = 0;
+    for (std::string line; std::getline(obj, line);)
+      if (line.rfind("vn ", 0) == 0)
+        ++vn;
+    EXPECT_EQ(vn, mesh.number_of_vertices());
+  }
+}
+
+TEST(WriteMesh, RejectsUnknownExtensionsAndUnwritablePaths) {
+  const Mesh mesh = sample_mesh();
+  Temporary_directory directory;
+  for (const std::string name : {"mesh.stl", "mesh", "mesh.", "dir.ply/mesh", "mesh.xyz"})
+    EXPECT_THROW(TS::write_mesh(directory.file(name), mesh), TS::Invalid_input) << name;
+  const std::string missing = directory.file("no/such/directory/mesh.ply");
+  try {
+    TS::write_mesh(missing, mesh);
+    FAIL() << "writing into a missing directory succeeded";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(missing), std::string::npos) << error.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(directory.file("mesh.stl")));
+}
