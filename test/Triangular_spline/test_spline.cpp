@@ -4,6 +4,8 @@
 #include "test_support.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangular_spline/domain_from_face_graph.h>
 #include <CGAL/Triangular_spline/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Spline_space.h>
 #include <CGAL/Triangular_spline/certify.h>
@@ -382,4 +384,40 @@ TEST(Spline, DecimalCollinearityIsHandledInDouble) {
   // plus the re-routing's neglected weight (< 1e-12 relative).
   EXPECT_LT(largest, 1e4);
   EXPECT_LT(certify(spline).max_residual, 1e-9 * largest);
+}
+
+TEST(Spline, DomainFromSurfaceMeshIn2DAnd3D) {
+  using K = Exact_kernel;
+  // A Surface_mesh with 2D points: the domain itself (no values).
+  CGAL::Surface_mesh<Epick::Point_2> flat;
+  const auto a = flat.add_vertex({0, 0}), b = flat.add_vertex({1, 0}), c = flat.add_vertex({1, 1}),
+             d = flat.add_vertex({0, 1});
+  flat.add_face(a, b, c);
+  flat.add_face(a, c, d);
+  const auto [domain, none] = TS::domain_from_face_graph<K>(flat);
+  EXPECT_EQ(domain.number_of_faces(), 2u);
+  EXPECT_EQ(domain.number_of_interior_edges(), 1u);
+  EXPECT_TRUE(none.empty());
+  // 3D points: (x, y) is the domain, z the data; the spline interpolates it exactly.
+  CGAL::Surface_mesh<Epick::Point_3> terrain;
+  std::vector<CGAL::Surface_mesh<Epick::Point_3>::Vertex_index> v;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      v.push_back(terrain.add_vertex({double(i), double(j), double(i * j) / 4}));
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      terrain.add_face(v[j * 3 + i], v[j * 3 + i + 1], v[j * 3 + i + 4]);
+      terrain.add_face(v[j * 3 + i], v[j * 3 + i + 4], v[j * 3 + i + 3]);
+    }
+  const auto [grid_domain, heights] = TS::domain_from_face_graph<K>(terrain);
+  ASSERT_EQ(heights.size(), 9u);
+  EXPECT_EQ(heights[8], K::FT(1));
+  C1_quintic_spline<K> spline(grid_domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(spline, heights, Fit::Interpolate);
+  EXPECT_TRUE(certify(spline).certified);
+  // A quad face is refused.
+  CGAL::Surface_mesh<Epick::Point_2> quad;
+  quad.add_face(quad.add_vertex({0, 0}), quad.add_vertex({1, 0}), quad.add_vertex({1, 1}),
+                quad.add_vertex({0, 1}));
+  EXPECT_THROW(TS::domain_from_face_graph<K>(quad), TS::Invalid_input);
 }
