@@ -13,6 +13,8 @@
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Exact_rational.h>
 
+#include <boost/container/static_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -190,6 +192,9 @@ public:
   using Patch = Bezier_triangle<Geom_traits, Value>;
   using Degenerate_frame = Degenerate_frame_t<Index>;
   static constexpr Slot null_slot = (std::numeric_limits<Slot>::max)();
+  /// the domain vertices and multiplicities of a control point's blossom argument (at most
+  /// three entries, no allocation)
+  using Polar_label = boost::container::static_vector<std::pair<Index, int>, 3>;
 
   /// how a dependent slot is computed: `value(target) = sum weights[i] * value(sources[i])`
   /// over the first `size` sources (the weights sum to one)
@@ -253,7 +258,7 @@ public:
 
   /// returns the polar label of slot `s`: the domain vertices and multiplicities
   /// (summing to 5) of the blossom argument \f$f(u^a v^b w^c)\f$ whose value it holds
-  std::vector<std::pair<Index, int>> polar_label(Slot s) const {
+  Polar_label polar_label(Slot s) const {
     const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
     if (s < V)
       return {{static_cast<Index>(s), 5}};
