@@ -112,8 +112,9 @@ private:
   build in C^0), subtracted from the number of slots.
 
   The domain is converted to exact rationals first (exactly), so the result is exact for
-  any kernel. Cost grows faster than linearly with the fill-in of the elimination: meant for
-  small and medium domains (thousands of faces).
+  any kernel. The elimination is sparse; its fill-in depends on the triangulation, and on
+  jittered grids it stays near-linear (measured: 0.2 s for 9800 triangles, 2.6 s for
+  100352 triangles).
 */
 template <class GeomTraits>
 std::size_t exact_spline_dimension(const Planar_domain<GeomTraits>& input) {
