@@ -421,3 +421,27 @@ TEST(Spline, DomainFromSurfaceMeshIn2DAnd3D) {
                 quad.add_vertex({0, 1}));
   EXPECT_THROW(TS::domain_from_face_graph<K>(quad), TS::Invalid_input);
 }
+
+TEST(Spline, ExtremeScalesInDouble) {
+  // Scaling by a power of two changes no rounding: the same frames must be found and the
+  // certificate must stay at round-off relative to the data, at 2^+-465 (about 1e+-140).
+  const auto base = l_shape_with_hole<Epick>();
+  const auto base_frames = TS::find_degenerate_frames(base).frames.size();
+  for (int exponent : {465, -465}) {
+    const double factor = std::ldexp(1.0, exponent);
+    std::vector<Epick::Point_2> points;
+    for (const auto& p : base.points())
+      points.emplace_back(p.x() * factor, p.y() * factor);
+    const Planar_domain<Epick> domain(points, base.faces());
+    EXPECT_EQ(TS::find_degenerate_frames(domain).frames.size(), base_frames) << exponent;
+    C1_quintic_spline<Epick> spline(domain);
+    Random_rationals random(31);
+    for (auto s : spline.free_slots())
+      spline.set_free_value(s, random.rational<double>() * factor);
+    spline.propagate();
+    double largest = 0;
+    for (double v : spline.values())
+      largest = (std::max)(largest, std::abs(v));
+    EXPECT_LT(certify(spline).max_residual, 1e-12 * largest) << exponent;
+  }
+}

@@ -453,7 +453,7 @@ private:
         const double ux = CGAL::to_double(b.x() - a.x()), uy = CGAL::to_double(b.y() - a.y());
         const double wx = CGAL::to_double(c.x() - a.x()), wy = CGAL::to_double(c.y() - a.y());
         const double sine =
-            std::abs(ux * wy - uy * wx) / std::sqrt((ux * ux + uy * uy) * (wx * wx + wy * wy));
+            std::abs(ux * wy - uy * wx) / (std::hypot(ux, uy) * std::hypot(wx, wy));
         worst = (std::min)(worst, sine);
       }
       // Exactly non-collinear but degenerate in double: still valid, ranked last.

@@ -66,7 +66,8 @@ bool numerically_collinear(const Point_2& p, const Point_2& r, const Point_2& q)
   const double cross = ax * by - ay * bx;
   const double dot = ax * bx + ay * by;
   // Opposite directions only: apexes on the two sides with r between them.
-  return dot < 0 && std::abs(cross) <= 1e-12 * std::sqrt((ax * ax + ay * ay) * (bx * bx + by * by));
+  // hypot, not a product of squares: coordinates up to 1e150 must not overflow to inf.
+  return dot < 0 && std::abs(cross) <= 1e-12 * std::hypot(ax, ay) * std::hypot(bx, by);
 }
 
 } // namespace internal
@@ -193,7 +194,7 @@ Planar_domain<GeomTraits> perturb_degenerate_vertices(
       for (auto w = nb; w != ne; ++w) {
         const double dx = CGAL::to_double(points[*w].x() - points[v].x());
         const double dy = CGAL::to_double(points[*w].y() - points[v].y());
-        shortest = (std::min)(shortest, std::sqrt(dx * dx + dy * dy));
+        shortest = (std::min)(shortest, std::hypot(dx, dy));
       }
       // A power of two below the shortest edge keeps the steps exact multiples in binary.
       const double unit = std::exp2(std::floor(std::log2(shortest)));
@@ -208,7 +209,7 @@ Planar_domain<GeomTraits> perturb_degenerate_vertices(
             continue;
           const double dx = CGAL::to_double(candidate.x() - points[v].x());
           const double dy = CGAL::to_double(candidate.y() - points[v].y());
-          moves.push_back({v, points[v], candidate, std::sqrt(dx * dx + dy * dy)});
+          moves.push_back({v, points[v], candidate, std::hypot(dx, dy)});
           points[v] = candidate;
           moved = true;
           break;
