@@ -5,7 +5,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 
 .DEFAULT_GOAL := build
-.PHONY: deps configure build demo test bench format doc clean
+.PHONY: deps configure build demo test bench format doc pictures clean
 
 deps:
 	@scripts/install_dependencies.sh
@@ -39,6 +39,10 @@ bench: build
 format: deps
 	find include src test examples benchmark \( -name '*.h' -o -name '*.cpp' \) -print0 \
 	  | xargs -0 -r clang-format -i
+
+# Regenerates the pictures of README.md and the manual (doc/Triangular_spline/fig/).
+pictures: build
+	BUILD_DIR=$(BUILD_DIR) scripts/make_pictures.sh
 
 doc: deps
 	mkdir -p build/doc

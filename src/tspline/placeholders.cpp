@@ -12,7 +12,10 @@ namespace tspline {
 namespace {
 
 int not_implemented(const std::string& command, int issue, const std::vector<std::string>& args) {
-  const std::string status = "not implemented yet (tracked in issue " + std::to_string(issue) + ")";
+  // issue 0: planned (SPEC) but not yet tracked by an issue
+  const std::string status =
+      issue > 0 ? "not implemented yet (tracked in issue " + std::to_string(issue) + ")"
+                : "not implemented yet (Xu ch. 5-6, SPEC section 4; no issue yet)";
   for (const std::string& arg : args) {
     if (arg == "--")
       break;
@@ -30,19 +33,7 @@ int not_implemented(const std::string& command, int issue, const std::vector<std
 } // namespace
 
 int run_pseudo_ag1(const std::vector<std::string>& args) {
-  return not_implemented("pseudo-ag1", 3, args);
-}
-int run_adjust(const std::vector<std::string>& args) {
-  return not_implemented("adjust", 4, args);
-}
-int run_mann(const std::vector<std::string>& args) {
-  return not_implemented("mann", 4, args);
-}
-int run_blend(const std::vector<std::string>& args) {
-  return not_implemented("blend", 5, args);
-}
-int run_render(const std::vector<std::string>& args) {
-  return not_implemented("render", 6, args);
+  return not_implemented("pseudo-ag1", 0, args);
 }
 
 } // namespace tspline

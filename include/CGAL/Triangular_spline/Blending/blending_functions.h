@@ -1,0 +1,481 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_BLENDING_BLENDING_FUNCTIONS_H
+#define CGAL_TRIANGULAR_SPLINE_BLENDING_BLENDING_FUNCTIONS_H
+
+#include <CGAL/Triangular_spline/Blending/Taylor_jet.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cstddef>
+#include <algorithm>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+namespace internal {
+
+template <class T>
+using Base_number = typename Jet_value<T>::Type;
+
+template <class T>
+constexpr bool is_exact_number() {
+  return CGAL::Algebraic_structure_traits<Base_number<T>>::Is_exact::value;
+}
+
+// 1 with the truncation order of `x` (a number, or a jet of the order of `x`).
+template <class T>
+T one_like(const T& x) {
+  using B = Base_number<T>;
+  T r = x * B(0) + B(1);
+  return r;
+}
+
+template <class T>
+T zero_like(const T& x) {
+  using B = Base_number<T>;
+  T r = x * B(0);
+  return r;
+}
+
+inline void check_order(int order, const char* who) {
+  if (order < 0)
+    throw Invalid_input(std::string(who) + ": the blending order d must be non-negative, got " +
+                        std::to_string(order));
+}
+
+// In floating point the formulas are homogeneous of degree 0 in the indicators: dividing
+// them by the largest magnitude avoids underflow of the products w_i = p_i^{d+1} (and of
+// their products). Exact number types are left alone.
+template <class T>
+std::vector<T> normalized(const std::vector<T>& v) {
+  if constexpr (is_exact_number<T>()) {
+    return v;
+  } else {
+    using B = Base_number<T>;
+    B largest(0);
+    for (const T& x : v) {
+      const B a = CGAL::abs(value_of(x));
+      if (a > largest)
+        largest = a;
+    }
+    if (!(largest > B(0)) || largest == B(1))
+      return v;
+    std::vector<T> r;
+    r.reserve(v.size());
+    for (const T& x : v)
+      r.push_back(x / largest);
+    return r;
+  }
+}
+
+// Sets the value (constant term) of a number or a jet.
+template <class T>
+void set_value(T& x, const Base_number<T>& value) {
+  if constexpr (std::is_same<T, Base_number<T>>::value)
+    x = value;
+  else
+    x.set_coefficient(0, 0, value);
+}
+
+// In floating point, indicators within round-off of zero (relative to the largest) are
+// zero: a point computed on a side or at a corner is off by a few ulps, and at a corner
+// two such tiny indicators would otherwise give direction-dependent, unstable values
+// (and for even d, p_i^{d+1} + p_j^{d+1} = 0 with opposite signs).
+template <class T>
+std::vector<T> snapped(std::vector<T> v) {
+  if constexpr (!is_exact_number<T>()) {
+    using B = Base_number<T>;
+    B largest(0);
+    for (const T& x : v)
+      largest = (std::max)(largest, B(CGAL::abs(value_of(x))));
+    const B threshold = largest * B(1e-15);
+    for (T& x : v)
+      if (CGAL::abs(value_of(x)) <= threshold)
+        set_value(x, B(0));
+  }
+  return v;
+}
+
+template <class T>
+std::vector<T> powers(const std::vector<T>& v, int order) {
+  std::vector<T> w;
+  w.reserve(v.size());
+  for (const T& x : v)
+    w.push_back(integer_power(x, order + 1));
+  return w;
+}
+
+template <class T>
+std::vector<std::size_t> zero_indices(const std::vector<T>& w) {
+  using B = Base_number<T>;
+  std::vector<std::size_t> zeros;
+  for (std::size_t i = 0; i < w.size(); ++i)
+    if (value_of(w[i]) == B(0))
+      zeros.push_back(i);
+  return zeros;
+}
+
+inline std::string index_list(const std::vector<std::size_t>& indices) {
+  std::string s;
+  for (std::size_t k = 0; k < indices.size(); ++k)
+    s += (k ? ", " : "") + std::to_string(indices[k]);
+  return s;
+}
+
+// prod_{k != i, j} w_k (i == j: prod_{k != i}); `one` carries the order of the jets.
+template <class T>
+T product_without(const std::vector<T>& w, std::size_t i, std::size_t j, const T& one) {
+  T p = one;
+  for (std::size_t k = 0; k < w.size(); ++k)
+    if (k != i && k != j)
+      p = p * w[k];
+  return p;
+}
+
+// Fang's f^{n,d,p} (Def. 3.4) from the powers w_i = p_i^{d+1}, with the limits of §3.3.
+template <class T>
+std::vector<T> fang_from_powers(const std::vector<T>& w_in, const char* who) {
+  using B = Base_number<T>;
+  const std::size_t n = w_in.size();
+  if (n == 0)
+    throw Invalid_input(std::string(who) + ": no inheritance indicator (n = 0)");
+  if (n == 1)
+    return {one_like(w_in[0])};
+  const std::vector<T> w = normalized(w_in);
+  const std::vector<std::size_t> zeros = zero_indices(w);
+  if (zeros.size() > 2)
+    throw Invalid_input(std::string(who) + ": " + std::to_string(zeros.size()) +
+                        " inheritance indicators vanish at the point (indices " +
+                        index_list(zeros) +
+                        "); f^{n,d,p} is defined where at most two vanish (Fang, §3.3)");
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (value_of(w[i]) + value_of(w[j]) == B(0) && value_of(w[i]) != B(0))
+        throw Invalid_input(std::string(who) + ": indicators " + std::to_string(i) + " and " +
+                            std::to_string(j) +
+                            " have p_i^{d+1} + p_j^{d+1} = 0 without vanishing (Fang, Def. 3.1)");
+  const T one = one_like(w[0]);
+  // P[i][j] = prod_{k != i, j} w_k, and D = sum_{i<j} P[i][j]
+  std::vector<T> P(n * n, one); // P[i * n + j]
+  T D = zero_like(w[0]);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      P[i * n + j] = product_without(w, i, j, one);
+      P[j * n + i] = P[i * n + j];
+      D = D + P[i * n + j];
+    }
+  if (value_of(D) == B(0))
+    throw Invalid_input(std::string(who) +
+                        ": the denominator of f^{n,d,p} vanishes (indicators too close to zero "
+                        "for the number type)");
+  std::vector<T> f(n, zero_like(w[0]));
+  const bool pair = zeros.size() == 2;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (pair && (i == zeros[0] || i == zeros[1]))
+      continue;
+    T numerator = zero_like(w[0]);
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != i) {
+        // w_j / (w_i + w_j) * prod_{k != i,j} w_k: the stable form of
+        // (prod_{k != i} w_k) / (w_i + w_j)
+        const T ratio = w[j] / (w[i] + w[j]);
+        numerator = numerator + ratio * P[i * n + j];
+      }
+    f[i] = numerator / D;
+  }
+  if (pair) {
+    // Only f_i + f_j is defined where p_i = p_j = 0 (Prop. 3.11); it is 1 minus the others
+    // (Prop. 3.3). Each gets half: the limit along w_i = w_j.
+    T rest = one;
+    for (std::size_t k = 0; k < n; ++k)
+      if (k != zeros[0] && k != zeros[1])
+        rest = rest - f[k];
+    const T half = rest / B(2);
+    f[zeros[0]] = half;
+    f[zeros[1]] = half;
+  }
+  return f;
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief returns the inherited terms \f$q^p\f$ (Fang, Def. 3.2): the number of indicators
+  whose value is zero.
+  \tparam T a number type or a `Taylor_jet` (its value is tested)
+*/
+template <class T>
+int inherited_terms(const std::vector<T>& indicators) {
+  return static_cast<int>(internal::zero_indices(indicators).size());
+}
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief returns the intermediate functions \f$g_i^{n,d}(v)\f$ of Fang's Def. 3.3, by the
+  formula itself:
+  \f[ g_i^{n,d}(v) = \Big(\prod_{j \ne i} w_j\Big)\Big(\sum_{j \ne i}
+  \frac{1}{w_i + w_j}\Big) \Big/ \sum_{\{j,k\},\, j \ne k}\; \prod_{l \ne j,k} w_l,
+  \qquad w_i = v_i^{d+1}. \f]
+  The denominator sums over unordered pairs \f$\{j, k\}\f$: with ordered pairs the
+  \f$g_i\f$ would sum to \f$1/2\f$, not 1 (the proof of Prop. 3.2 and Def. 4.3 use
+  unordered pairs).
+
+  The formula has no limit handling: it is defined where no \f$w_i + w_j\f$ and not the
+  denominator vanish, i.e. where at most one \f$v_i\f$ is zero (when the \f$v_i\f$ are
+  non-negative). Use `blending_functions()` for the blending functions with their limits.
+
+  \tparam T a field number type (`double`, `CGAL::Exact_rational`) or a `Taylor_jet`; with
+  an exact type the result is exact
+  \param v the values \f$v_0, \dots, v_{n-1}\f$, \f$n \ge 2\f$
+  \param order the blending order \f$d \ge 0\f$
+  \throws Invalid_input if \f$d < 0\f$, \f$n < 2\f$, or a denominator vanishes
+*/
+template <class T>
+std::vector<T> intermediate_functions(const std::vector<T>& v, int order) {
+  using B = internal::Base_number<T>;
+  internal::check_order(order, "intermediate_functions");
+  const std::size_t n = v.size();
+  if (n < 2)
+    throw Invalid_input("intermediate_functions: need at least two values, got " +
+                        std::to_string(n));
+  const std::vector<T> w = internal::powers(v, order);
+  const T one = internal::one_like(w[0]);
+  T D = internal::zero_like(w[0]);
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t k = j + 1; k < n; ++k)
+      D = D + internal::product_without(w, j, k, one);
+  if (internal::value_of(D) == B(0))
+    throw Invalid_input("intermediate_functions: the denominator of g^{n,d} vanishes");
+  std::vector<T> g;
+  g.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    T sum = internal::zero_like(w[0]);
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != i) {
+        const T s = w[i] + w[j];
+        if (internal::value_of(s) == B(0))
+          throw Invalid_input("intermediate_functions: w_" + std::to_string(i) + " + w_" +
+                              std::to_string(j) + " = 0; g^{n,d} is undefined there");
+        sum = sum + one / s;
+      }
+    const T gi = internal::product_without(w, i, i, one) * sum / D;
+    g.push_back(gi);
+  }
+  return g;
+}
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief returns Fang's blending functions \f$f_i^{n,d,p}\f$ (Def. 3.4) at a point, given
+  the values \f$p_i\f$ of the inheritance indicators there, with the limits where
+  indicators vanish.
+
+  - No indicator is zero: \f$f_i = g_i^{n,d}(p)\f$, evaluated in the stable form
+    \f$f_i = \sum_{j \ne i} \frac{w_j}{w_i + w_j} \prod_{k \ne i,j} w_k \big/ D\f$.
+  - One indicator \f$p_i\f$ is zero: the same formula is defined (Prop. 3.4) and gives
+    \f$f_i = 1\f$, \f$f_k = 0\f$ exactly; with jets, \f$f_i - 1\f$ and the \f$f_k\f$
+    vanish to order \f$d\f$ (Props. 3.5–3.7).
+  - Two indicators \f$p_i = p_j = 0\f$: the \f$f_k\f$, \f$k \ne i, j\f$, are defined by
+    the formula and vanish to order \f$d\f$ (Prop. 3.12); \f$f_i\f$ and \f$f_j\f$ alone
+    have no limit (it depends on the direction: \f$f_i \to w_j/(w_i + w_j)\f$), only
+    their sum does, \f$1 - \sum_{k \ne i,j} f_k\f$ (Props. 3.11, 3.13, 3.14). The
+    function returns half of it for each: the limit along \f$w_i = w_j\f$. Any blend
+    \f$\sum f_k S_k\f$ is then exact wherever it is defined, i.e. where \f$S_i\f$ and
+    \f$S_j\f$ agree (to order \f$d\f$ for derivatives, Props. 3.15, 3.16).
+  - More than two indicators zero: undefined, `Invalid_input` is thrown.
+
+  The functions sum to one exactly with an exact number type (Prop. 3.3). In floating
+  point the indicators are first divided by the largest magnitude (the functions are
+  homogeneous of degree 0), so tiny indicators do not underflow, and indicators below
+  \f$10^{-15}\f$ times the largest are taken as zero: a point computed on a side or at a
+  corner is off by round-off, and at a corner two tiny indicators would give unstable,
+  direction-dependent values.
+
+  \tparam T a field number type or a `Taylor_jet` of one: with jets of the indicators
+  (as functions of the domain point), the result is the jets of the \f$f_i\f$
+  \param indicators \f$p_0(x,y), \dots, p_{n-1}(x,y)\f$, \f$n \ge 1\f$ (they must satisfy
+  Def. 3.1: \f$p_i + p_j = 0\f$ only where both vanish; true for non-negative indicators)
+  \param order the blending order \f$d \ge 0\f$
+  \throws Invalid_input if \f$d < 0\f$, \f$n = 0\f$, more than two indicators vanish, two
+  non-zero indicators violate Def. 3.1, or (floating point) the denominator underflows
+*/
+template <class T>
+std::vector<T> blending_functions(const std::vector<T>& indicators, int order) {
+  internal::check_order(order, "blending_functions");
+  return internal::fang_from_powers(
+      internal::powers(internal::snapped(internal::normalized(indicators)), order),
+      "blending_functions");
+}
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief returns Fang's blending functions from the powers \f$w_i = p_i^{d+1}\f$ instead of
+  the indicators; see `blending_functions()`.
+
+  For indicators whose power is smoother than the indicator itself: a Euclidean distance
+  \f$p = \sqrt{q}\f$ has \f$p^{d+1} = q^{(d+1)/2}\f$, a polynomial when \f$d\f$ is odd, whose
+  jet exists where \f$p = 0\f$ (Fang, eq. 7.8).
+*/
+template <class T>
+std::vector<T> blending_functions_of_powers(const std::vector<T>& powers) {
+  return internal::fang_from_powers(powers, "blending_functions_of_powers");
+}
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief returns the extended Nielson blending functions (Fang, eq. 9.1, "special side
+  blending functions"):
+  \f$f_i = \prod_{j \ne i} w_j \big/ \sum_{j} \prod_{k \ne j} w_k\f$,
+  \f$w_i = v_i^{d+1}\f$.
+
+  For \f$n = 3\f$ this is eq. 4.8; \f$d = 0\f$ gives Nielson's functions (Def. 2.3) and
+  \f$d = 1\f$ Hagen and Pottmann's (eq. 2.9). They inherit derivatives up to order \f$d\f$
+  where one indicator vanishes, like Fang's, but are undefined where two vanish (the
+  corners of a triangle): there all terms of the denominator vanish.
+  \throws Invalid_input if \f$d < 0\f$, \f$n = 0\f$ or two or more indicators vanish
+*/
+template <class T>
+std::vector<T> extended_nielson_functions(const std::vector<T>& indicators, int order) {
+  using B = internal::Base_number<T>;
+  internal::check_order(order, "extended_nielson_functions");
+  const std::size_t n = indicators.size();
+  if (n == 0)
+    throw Invalid_input("extended_nielson_functions: no indicator");
+  const std::vector<T> w = internal::powers(internal::normalized(indicators), order);
+  const std::vector<std::size_t> zeros = internal::zero_indices(w);
+  if (zeros.size() >= 2 && n >= 2)
+    throw Invalid_input("extended_nielson_functions: indicators " + internal::index_list(zeros) +
+                        " vanish; Nielson-type functions are undefined where two vanish");
+  const T one = internal::one_like(w[0]);
+  std::vector<T> numerators;
+  numerators.reserve(n);
+  T D = internal::zero_like(w[0]);
+  for (std::size_t i = 0; i < n; ++i) {
+    numerators.push_back(internal::product_without(w, i, i, one));
+    D = D + numerators.back();
+  }
+  if (internal::value_of(D) == B(0))
+    throw Invalid_input("extended_nielson_functions: the denominator vanishes");
+  for (T& x : numerators)
+    x = x / D;
+  return numerators;
+}
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief returns Nielson's blending functions (Fang, Def. 2.3):
+  \f$f_0 = vw/(uv + vw + wu)\f$ and cyclically; undefined at the corners.
+  \throws Invalid_input at a corner (two of \f$u, v, w\f$ zero)
+*/
+template <class T>
+std::array<T, 3> nielson_functions(const T& u, const T& v, const T& w) {
+  const std::vector<T> f = extended_nielson_functions(std::vector<T>{u, v, w}, 0);
+  return {{f[0], f[1], f[2]}};
+}
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief returns Hagen and Pottmann's blending functions (Fang, eq. 2.9):
+  \f$f_0 = v^2w^2/(u^2v^2 + v^2w^2 + w^2u^2)\f$ and cyclically; undefined at the corners.
+  \throws Invalid_input at a corner
+*/
+template <class T>
+std::array<T, 3> hagen_pottmann_functions(const T& u, const T& v, const T& w) {
+  const std::vector<T> f = extended_nielson_functions(std::vector<T>{u, v, w}, 1);
+  return {{f[0], f[1], f[2]}};
+}
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief returns Shepard's functions (Fang, eq. 9.2):
+  \f$s_i = w_i^{-1} \big/ \sum_j w_j^{-1}\f$, \f$w_i = v_i^{d+1}\f$, and their limit
+  (\f$s_i = 1\f$, the others 0, with derivatives) where one indicator vanishes.
+
+  Where no indicator vanishes they are computed from the reciprocals, an independent
+  formula; they equal `extended_nielson_functions()` (multiply numerator and denominator
+  by \f$\prod w\f$), which the tests check exactly.
+  \throws Invalid_input if \f$d < 0\f$, \f$n = 0\f$ or two or more indicators vanish
+*/
+template <class T>
+std::vector<T> shepard_functions(const std::vector<T>& indicators, int order) {
+  using B = internal::Base_number<T>;
+  internal::check_order(order, "shepard_functions");
+  if (indicators.empty())
+    throw Invalid_input("shepard_functions: no indicator");
+  const std::vector<T> w = internal::powers(internal::normalized(indicators), order);
+  if (!internal::zero_indices(w).empty())
+    return extended_nielson_functions(indicators, order); // the continuous extension
+  const T one = internal::one_like(w[0]);
+  std::vector<T> r;
+  r.reserve(w.size());
+  T sum = internal::zero_like(w[0]);
+  for (const T& x : w) {
+    r.push_back(one / x);
+    sum = sum + r.back();
+  }
+  if (internal::value_of(sum) == B(0))
+    throw Invalid_input("shepard_functions: the sum of the reciprocals vanishes");
+  for (T& x : r)
+    x = x / sum;
+  return r;
+}
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief the blending-function policy of Fang (Def. 3.4), the default of the blending
+  schemes; see `blending_functions()`.
+
+  A blending-function policy is a class with a `name()` and a call operator
+  `std::vector<T> operator()(const std::vector<T>& indicators, int d) const` for numbers
+  and `Taylor_jet`s; optionally `of_powers(w)` for indicators given as powers.
+*/
+struct Fang_blending_functions {
+  static const char* name() { return "fang"; }
+  template <class T>
+  std::vector<T> operator()(const std::vector<T>& indicators, int order) const {
+    return blending_functions(indicators, order);
+  }
+  template <class T>
+  std::vector<T> of_powers(const std::vector<T>& powers) const {
+    return blending_functions_of_powers(powers);
+  }
+};
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief the blending-function policy of the extended Nielson functions (eq. 9.1); the
+  schemes using it are undefined at points where two indicators vanish.
+*/
+struct Extended_nielson_blending_functions {
+  static const char* name() { return "extended-nielson"; }
+  template <class T>
+  std::vector<T> operator()(const std::vector<T>& indicators, int order) const {
+    return extended_nielson_functions(indicators, order);
+  }
+};
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief the blending-function policy of Shepard's functions (eq. 9.2).
+*/
+struct Shepard_blending_functions {
+  static const char* name() { return "shepard"; }
+  template <class T>
+  std::vector<T> operator()(const std::vector<T>& indicators, int order) const {
+    return shepard_functions(indicators, order);
+  }
+};
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_BLENDING_BLENDING_FUNCTIONS_H

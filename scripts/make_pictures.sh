@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Regenerates the README and manual pictures in doc/Triangular_spline/fig/ from the current
+# code: builds tspline, runs `tspline demo` (which ends with its pictures, 640x480) and
+# `tspline render` on the saved demo spline, and copies the PNGs. Deterministic: the same
+# code gives the same bytes, so `git status` shows whether the pictures changed.
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+BUILD_DIR=${BUILD_DIR:-build}
+fig=doc/Triangular_spline/fig
+max_bytes=153600 # keep each picture under ~150 KB
+
+if [[ ! -f "$BUILD_DIR/CMakeCache.txt" ]]; then
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$BUILD_DIR" --target tspline -j "$(nproc)"
+tspline="$BUILD_DIR/src/tspline/tspline"
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$tspline" demo --output-dir "$work" >/dev/null
+
+mkdir -p "$fig"
+for mode in shaded curvature isophotes net; do
+  cp "$work/demo_$mode.png" "$fig/tour_$mode.png"
+done
+# The curvature of the demo surface seen from above, with a fixed colour range: where the
+# approximate fit concentrates curvature near the data points.
+"$tspline" render --input "$work/demo.spline" --out "$fig/tour_curvature_top.png" \
+  --mode curvature --view 0,90 --size 600x450 --range 4 >/dev/null
+
+for picture in "$fig"/tour_*.png; do
+  bytes=$(stat -c %s "$picture")
+  echo "$picture: $bytes bytes"
+  if ((bytes > max_bytes)); then
+    echo "make_pictures.sh: $picture is larger than $max_bytes bytes" >&2
+    exit 1
+  fi
+done

@@ -1,0 +1,99 @@
+// Bridge from Bézier patches to the renderer's control-net overlay. Header-only (templates
+// over the CGAL kernel and the patch value type); include it where patches are at hand.
+
+#ifndef TSPLINE_RENDER_CONTROL_NET_H
+#define TSPLINE_RENDER_CONTROL_NET_H
+
+#include "render/render.h"
+
+#include <CGAL/Triangular_spline/Multi_index.h>
+#include <CGAL/Triangular_spline/Value_traits.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <type_traits>
+#include <utility>
+
+namespace tspline::render {
+
+// The status of every control point is unknown (e.g. a spline read from a file).
+struct Unknown_status {
+  template <class Face>
+  Point_status operator()(Face, const CGAL::Triangular_spline::Multi_index&) const {
+    return Point_status::Unknown;
+  }
+};
+
+inline Point_role point_role(const CGAL::Triangular_spline::Multi_index& index) {
+  using CGAL::Triangular_spline::Control_point_role;
+  switch (CGAL::Triangular_spline::role(index)) {
+  case Control_point_role::Corner:
+    return Point_role::Corner;
+  case Control_point_role::Star:
+    return Point_role::Star;
+  case Control_point_role::Edge_middle:
+    return Point_role::Edge_middle;
+  default:
+    return Point_role::Inner;
+  }
+}
+
+// The control nets of `faces` patches: every patch's points and the edges of its triangular
+// grid, b_{i+1,j,k}-b_{i,j+1,k}-b_{i,j,k+1} for i+j+k = m-1. A functional patch's point
+// b_{ijk} sits at ((i r + j s + k t)/m, value) over its domain triangle (r, s, t); a
+// parametric patch's point is its value. Points and segments shared by neighbouring patches
+// appear once. `patch(f)` returns a CGAL::Triangular_spline::Bezier_triangle; `status(f,
+// index)` says whether b_index of patch f was prescribed or propagated.
+template <class PatchSource, class Status = Unknown_status>
+Net control_net(std::size_t faces, PatchSource patch, Status status = Status()) {
+  namespace TS = CGAL::Triangular_spline;
+  Net net;
+  std::map<Vector, std::size_t> seen_points;
+  std::map<std::pair<Vector, Vector>, bool> seen_segments;
+  for (std::size_t f = 0; f < faces; ++f) {
+    const auto& bezier = patch(f);
+    using Value = typename std::decay_t<decltype(bezier)>::Value_type;
+    const int m = bezier.degree();
+    auto position = [&](const TS::Multi_index& index) -> Vector {
+      const Value& value = bezier.control_point(index);
+      if constexpr (TS::Value_traits<Value>::dimension == 1) {
+        double x = 0, y = 0;
+        for (int v = 0; v < 3; ++v) {
+          const double w = m == 0 ? 1.0 / 3 : double(index[v]) / m;
+          x += w * CGAL::to_double(bezier.vertex(v).x());
+          y += w * CGAL::to_double(bezier.vertex(v).y());
+        }
+        return {x, y, CGAL::to_double(value)};
+      } else {
+        return {CGAL::to_double(value.x()), CGAL::to_double(value.y()), CGAL::to_double(value.z())};
+      }
+    };
+    for (const TS::Multi_index& index : TS::multi_indices(m)) {
+      const Vector p = position(index);
+      if (seen_points.emplace(p, net.points.size()).second)
+        net.points.push_back({p, point_role(index), status(f, index)});
+    }
+    auto add_segment = [&](const TS::Multi_index& a, const TS::Multi_index& b) {
+      Vector p = position(a), q = position(b);
+      if (q < p)
+        std::swap(p, q);
+      if (seen_segments.emplace(std::make_pair(p, q), true).second)
+        net.segments.push_back({{p, q}});
+    };
+    if (m == 0)
+      continue;
+    for (const TS::Multi_index& t : TS::multi_indices(m - 1)) {
+      const TS::Multi_index a{t.i + 1, t.j, t.k}, b{t.i, t.j + 1, t.k}, c{t.i, t.j, t.k + 1};
+      add_segment(a, b);
+      add_segment(b, c);
+      add_segment(c, a);
+    }
+  }
+  return net;
+}
+
+} // namespace tspline::render
+
+#endif // TSPLINE_RENDER_CONTROL_NET_H

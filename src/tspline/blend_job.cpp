@@ -1,0 +1,315 @@
+// Fang's blending pipeline: read or generate a mesh -> vertex/edge/face surfaces -> measured
+// continuity and curvature -> tessellation -> outputs. Computed in double (Epick).
+
+#include "blend_job.h"
+#include "files.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
+#include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
+#include <CGAL/Triangular_spline/Blending/blending_continuity.h>
+#include <CGAL/Triangular_spline/Blending/test_meshes.h>
+#include <CGAL/Triangular_spline/tessellate.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace tspline {
+
+namespace {
+
+namespace TS = CGAL::Triangular_spline;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point_3 = Kernel::Point_3;
+using Vector_3 = Kernel::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point_3>;
+
+// Runs `read` with std::cerr silenced: CGAL's readers print their own diagnostics; ours is
+// the one-line error.
+template <class Read>
+bool quietly(Read read) {
+  std::ostringstream swallowed;
+  std::streambuf* saved = std::cerr.rdbuf(swallowed.rdbuf());
+  try {
+    const bool ok = read();
+    std::cerr.rdbuf(saved);
+    return ok;
+  } catch (...) {
+    std::cerr.rdbuf(saved);
+    throw;
+  }
+}
+
+// Reads a polygon mesh: as a polygon soup first (to diagnose non-manifold input instead of
+// repairing it silently), then converted; normals from NOFF and PLY files.
+Mesh read_mesh(const std::string& path, bool& normals_in_file) {
+  const std::string ext = lowercase_extension(path);
+  if (ext != "off" && ext != "ply" && ext != "obj" && ext != "stl")
+    throw TS::Invalid_input(path + ": unsupported mesh file extension '." + ext +
+                            "' (expected .off, .ply, .obj or .stl)");
+  if (!std::ifstream(path))
+    throw TS::Invalid_input(path + ": cannot open the file");
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  std::vector<Vector_3> normals;
+  bool read = false;
+  if (ext == "off") {
+    std::ifstream in(path);
+    read = quietly([&] {
+      return CGAL::IO::read_OFF(
+          in, points, polygons,
+          CGAL::parameters::vertex_normal_output_iterator(std::back_inserter(normals)));
+    });
+  } else {
+    read = quietly([&] { return CGAL::IO::read_polygon_soup(path, points, polygons); });
+  }
+  if (!read)
+    throw TS::Invalid_input(path + ": cannot read the file as a ." + ext + " mesh");
+  if (polygons.empty())
+    throw TS::Invalid_input(path + ": the mesh has no face");
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    if (polygons[f].size() < 3)
+      throw TS::Invalid_input(path + ": face " + std::to_string(f) + " has fewer than 3 vertices");
+    for (std::size_t v : polygons[f])
+      if (v >= points.size())
+        throw TS::Invalid_input(path + ": face " + std::to_string(f) + " refers to vertex " +
+                                std::to_string(v) + " but there are only " +
+                                std::to_string(points.size()));
+  }
+  for (std::size_t v = 0; v < points.size(); ++v)
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(points[v][c]))
+        throw TS::Invalid_input(path + ": vertex " + std::to_string(v) +
+                                " has a coordinate that is not finite");
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw TS::Invalid_input(path + ": not a manifold, consistently oriented polygon mesh (an "
+                                   "edge has more than two faces, a vertex several umbrellas, "
+                                   "or neighbouring faces disagree on the orientation)");
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  // The soup's vertex i is the mesh's vertex i (every point of a valid soup is used).
+  normals_in_file = false;
+  if (ext == "ply") {
+    Mesh with_properties;
+    std::ifstream in(path, std::ios::binary);
+    if (quietly([&] { return CGAL::IO::read_PLY(in, with_properties); }) &&
+        with_properties.number_of_vertices() == points.size()) {
+      const auto [map, found] =
+          with_properties.property_map<Mesh::Vertex_index, Vector_3>("v:normal");
+      if (found)
+        for (Mesh::Vertex_index v : with_properties.vertices())
+          normals.push_back(map[v]);
+    }
+  }
+  if (!normals.empty() && normals.size() == points.size() &&
+      mesh.number_of_vertices() == points.size()) {
+    auto map =
+        mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:normal", Vector_3(0, 0, 0)).first;
+    for (Mesh::Vertex_index v : mesh.vertices())
+      map[v] = normals[static_cast<std::size_t>(v)];
+    normals_in_file = true;
+  }
+  return mesh;
+}
+
+Json numbers(const std::vector<double>& v) {
+  Json a = Json::array();
+  for (double x : v)
+    a.push_back(x);
+  return a;
+}
+
+std::string join(const std::vector<double>& v) {
+  std::ostringstream s;
+  s << std::setprecision(2) << std::scientific;
+  for (std::size_t k = 0; k < v.size(); ++k)
+    s << (k ? "  " : "") << "[" << k << "] " << v[k];
+  return s.str();
+}
+
+const char* variant_description(TS::Blending_variant v) {
+  switch (v) {
+  case TS::Blending_variant::BASIC:
+    return "basic (ch. 5: C^d across edges, normals continuous at vertices)";
+  case TS::Blending_variant::VERTEX_CONTINUITY:
+    return "vertex (6.1/7.3: C^d at the vertices in their frames)";
+  case TS::Blending_variant::OPEN_SET:
+    return "open (6.2: C^d on a neighbourhood of each vertex)";
+  }
+  return "";
+}
+
+} // namespace
+
+std::string blend_shape_names() {
+  std::string s;
+  for (const std::string& name : TS::blending_test_mesh_names())
+    s += (s.empty() ? "" : ", ") + name;
+  return s;
+}
+
+Json run_blend_job(const Blend_job& job, std::ostream& out) {
+  Stopwatch clock, total;
+  Json timings = Json::object();
+  Json report = Json::object();
+
+  Mesh mesh;
+  bool normals_in_file = false;
+  std::string source;
+  if (!job.shape.empty()) {
+    const std::vector<std::string> names = TS::blending_test_mesh_names();
+    if (std::find(names.begin(), names.end(), job.shape) == names.end())
+      throw Usage_error("unknown --shape '" + job.shape + "' (one of " + blend_shape_names() + ")");
+    mesh = TS::blending_test_mesh<Point_3>(job.shape, job.seed);
+    normals_in_file = mesh.property_map<Mesh::Vertex_index, Vector_3>("v:normal").second;
+    source = "test mesh '" + job.shape + "'";
+  } else {
+    mesh = read_mesh(job.input, normals_in_file);
+    source = job.input;
+  }
+  timings.set("read", clock.lap());
+
+  TS::Mesh_blending_options options;
+  options.order = job.order;
+  options.variant = job.variant == "basic"    ? TS::Blending_variant::BASIC
+                    : job.variant == "vertex" ? TS::Blending_variant::VERTEX_CONTINUITY
+                                              : TS::Blending_variant::OPEN_SET;
+  options.vertex_surface = job.vertex_surface == "lsq" ? TS::Vertex_surface_method::LEAST_SQUARES
+                                                       : TS::Vertex_surface_method::LEAST;
+  options.least_squares_degree = job.least_squares_degree;
+  std::unique_ptr<TS::Mesh_blending_surface<Point_3>> built;
+  try {
+    built = std::make_unique<TS::Mesh_blending_surface<Point_3>>(mesh, options);
+  } catch (const TS::Invalid_input& e) {
+    throw TS::Invalid_input(source + ": " + e.what());
+  }
+  const TS::Mesh_blending_surface<Point_3>& surface = *built;
+  timings.set("build", clock.lap());
+
+  const TS::Blending_continuity continuity = TS::measure_blending_continuity(surface, job.samples);
+  timings.set("measure_continuity", clock.lap());
+  const TS::Blending_curvature curvature = TS::measure_blending_curvature(surface, job.resolution);
+  timings.set("measure_curvature", clock.lap());
+
+  std::map<std::size_t, std::size_t> sides;
+  for (std::size_t f = 0; f < surface.number_of_faces(); ++f)
+    ++sides[surface.face_size(f)];
+  std::size_t border_edges = 0;
+  for (std::size_t e = 0; e < surface.number_of_edges(); ++e)
+    border_edges += surface.edge_sides(e).size() == 1 ? 1 : 0;
+
+  report.set("input", job.shape.empty() ? Json(job.input) : Json());
+  report.set("shape", job.shape.empty() ? Json() : Json(job.shape));
+  report.set("order", job.order);
+  report.set("variant", job.variant);
+  report.set("vertex_surface", job.vertex_surface == "lsq" ? "least_squares" : "least");
+  if (job.vertex_surface == "lsq")
+    report.set("least_squares_degree", job.least_squares_degree);
+  report.set("vertices", surface.number_of_vertices());
+  report.set("edges", surface.number_of_edges());
+  report.set("border_edges", border_edges);
+  report.set("faces", surface.number_of_faces());
+  Json by_size = Json::object();
+  for (const auto& [n, count] : sides)
+    by_size.set(std::to_string(n), count);
+  report.set("faces_by_sides", by_size);
+  report.set("normals", surface.has_estimated_normals() ? "estimated" : "given");
+  report.set("folded_maps", surface.number_of_folded_maps());
+  report.set("measured_order", continuity.measured_order);
+  report.set("samples_per_edge", job.samples);
+  report.set("max_edge_jump", numbers(continuity.max_edge_jump));
+  report.set("max_vertex_jump", numbers(continuity.max_vertex_jump));
+  report.set("max_edge_inheritance_error", numbers(continuity.max_edge_inheritance_error));
+  report.set("max_normal_angle_jump_deg", continuity.max_normal_angle_jump_deg);
+  Json interpolation = Json::object();
+  interpolation.set("position", continuity.max_position_error);
+  interpolation.set("normal_angle_deg", continuity.max_normal_error_deg);
+  report.set("max_interpolation_error", interpolation);
+  report.set("min_gaussian_curvature", curvature.min_gaussian);
+  report.set("max_gaussian_curvature", curvature.max_gaussian);
+  report.set("curvature_resolution", job.resolution);
+  report.set("singular_points", curvature.singular);
+  Json gap = Json::object();
+  gap.set("delta", numbers({1e-2, 1e-3}));
+  gap.set("absolute", numbers({curvature.vertex_gap[0], curvature.vertex_gap[1]}));
+  gap.set("relative",
+          numbers({curvature.relative_vertex_gap[0], curvature.relative_vertex_gap[1]}));
+  report.set("vertex_curvature_gap", gap);
+  report.set("mesh_size", continuity.size);
+
+  TS::Blending_tessellation_statistics tessellation;
+  if (!job.mesh.empty()) {
+    Mesh tessellated;
+    tessellation = surface.tessellate(tessellated, job.resolution);
+    timings.set("tessellate", clock.lap());
+    TS::write_mesh(job.mesh, tessellated);
+    timings.set("write_mesh", clock.lap());
+    Json m = Json::object();
+    m.set("path", job.mesh);
+    m.set("resolution", job.resolution);
+    m.set("vertices", tessellation.vertices);
+    m.set("faces", tessellation.faces);
+    report.set("mesh", m);
+  }
+  timings.set("total", total.lap());
+  report.set("timings", timings);
+
+  std::string faces_text;
+  for (const auto& [n, count] : sides)
+    faces_text += (faces_text.empty() ? "" : ", ") + std::to_string(count) +
+                  (n == 3   ? " triangles"
+                   : n == 4 ? " quads"
+                            : " " + std::to_string(n) + "-gons");
+  out << "Fang's blending over " << source << "\n"
+      << "  mesh: " << surface.number_of_vertices() << " vertices, " << surface.number_of_edges()
+      << " edges (" << border_edges << " on the border), " << surface.number_of_faces()
+      << " faces (" << faces_text << "); normals "
+      << (surface.has_estimated_normals() ? "estimated from the faces" : "given") << "\n"
+      << "  order d = " << job.order << ", variant " << variant_description(options.variant)
+      << "\n  vertex surfaces: "
+      << (job.vertex_surface == "lsq"
+              ? "least squares, degree " + std::to_string(job.least_squares_degree)
+              : std::string("de Boor-Ron least interpolant"))
+      << "\n";
+  if (surface.number_of_folded_maps() > 0)
+    out << "  warning: " << surface.number_of_folded_maps()
+        << " edge-to-face maps reverse orientation (the mesh is too sharp for its normals)\n";
+  out << std::setprecision(3) << "  max derivative jump across edges (edge frames), by order:  "
+      << join(continuity.max_edge_jump) << "\n"
+      << "  max derivative jump at vertices (vertex frames), by order: "
+      << join(continuity.max_vertex_jump) << "\n"
+      << "  normal angle jump across edges: " << continuity.max_normal_angle_jump_deg
+      << " deg; interpolation error at the vertices: position " << continuity.max_position_error
+      << ", normal " << continuity.max_normal_error_deg << " deg\n"
+      << "  Gaussian curvature in [" << curvature.min_gaussian << ", " << curvature.max_gaussian
+      << "] (grid of " << job.resolution << " segments per edge); gap towards the vertices "
+      << curvature.relative_vertex_gap[1] << " (relative, at 1e-3)\n";
+  if (!job.mesh.empty())
+    out << "  mesh: " << job.mesh << " (" << tessellation.vertices << " vertices, "
+        << tessellation.faces << " triangles)\n";
+  if (!job.report.empty()) {
+    std::ofstream file(job.report);
+    if (!file)
+      throw std::runtime_error("cannot write '" + job.report + "'");
+    report.write(file);
+    file << '\n';
+    if (!file)
+      throw std::runtime_error("writing '" + job.report + "' failed");
+  }
+  return report;
+}
+
+} // namespace tspline

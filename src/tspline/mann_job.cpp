@@ -1,0 +1,329 @@
+// Mann's continuity adjustment of a saved network (exact), and Mann's interpolant from
+// scattered data or a height-field mesh (double or exact).
+
+#include "mann_job.h"
+#include "files.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangular_spline/Continuity_adjustment.h>
+#include <CGAL/Triangular_spline/IO/mesh_domain.h>
+#include <CGAL/Triangular_spline/IO/scattered_data.h>
+#include <CGAL/Triangular_spline/IO/spline_file.h>
+#include <CGAL/Triangular_spline/certify.h>
+#include <CGAL/Triangular_spline/mann_interpolant.h>
+#include <CGAL/Triangular_spline/tessellate.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace tspline {
+
+namespace {
+
+namespace TS = CGAL::Triangular_spline;
+using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+
+Json index_json(std::uint32_t face, const TS::Multi_index& index) {
+  Json entry = Json::array();
+  entry.push_back(face);
+  entry.push_back(index.i);
+  entry.push_back(index.j);
+  entry.push_back(index.k);
+  return entry;
+}
+
+// What the adjustment did; with `details`, the moved control points as [face, i, j, k]
+// quadruples per changed edge and vertex.
+Json adjustment_json(const TS::Network_adjustment& a, bool details) {
+  Json result = Json::object();
+  result.set("order", a.order);
+  result.set("touched_points", a.number_of_touched_points());
+  result.set("changed_edges", a.number_of_changed_edges());
+  result.set("projected_vertices", a.vertices.size());
+  result.set("seconds", a.seconds);
+  if (!details)
+    return result;
+  Json edges = Json::array();
+  for (const TS::Edge_adjustment& e : a.edges) {
+    if (e.touched.empty())
+      continue;
+    Json entry = Json::object();
+    entry.set("edge", e.edge);
+    Json vertices = Json::array();
+    vertices.push_back(e.vertices[0]);
+    vertices.push_back(e.vertices[1]);
+    entry.set("vertices", vertices);
+    Json touched = Json::array();
+    for (const TS::Touched_control_point& p : e.touched)
+      touched.push_back(index_json(p.face, p.index));
+    entry.set("touched", touched);
+    edges.push_back(entry);
+  }
+  result.set("edges", edges);
+  Json vertices = Json::array();
+  for (const TS::Vertex_adjustment& v : a.vertices) {
+    Json entry = Json::object();
+    entry.set("vertex", v.vertex);
+    entry.set("residual_before", v.residual);
+    Json touched = Json::array();
+    for (const TS::Touched_control_point& p : v.touched)
+      touched.push_back(index_json(p.face, p.index));
+    entry.set("touched", touched);
+    vertices.push_back(entry);
+  }
+  result.set("vertices", vertices);
+  return result;
+}
+
+Json continuity_json(const TS::Ck_certificate& c) {
+  Json result = Json::object();
+  result.set("order", c.order);
+  result.set("exact", c.exact);
+  result.set("certified", c.certified);
+  result.set("lowest_order", c.lowest_order);
+  result.set("failed_edges", c.failed_edges);
+  result.set("max_residual", c.max_residual);
+  return result;
+}
+
+std::string order_summary(const TS::Ck_certificate& c) {
+  return "C^" + std::to_string(c.order) + " on " +
+         std::to_string(c.interior_edges - c.failed_edges) + " of " +
+         std::to_string(c.interior_edges) + " interior edges (lowest order " +
+         (c.lowest_order < 0 ? std::string("none: not C^0") : std::to_string(c.lowest_order)) + ")";
+}
+
+template <class Value>
+Job_result adjust_file(std::istream& in, const Adjust_job& job, std::ostream& out) {
+  Stopwatch clock, total;
+  Json timings = Json::object();
+  TS::Spline_file<Exact, Value> file = TS::read_spline_file<Exact, Value>(in, job.input);
+  timings.set("read", clock.lap());
+  const auto& domain = file.domain;
+  auto& patches = file.patches;
+  const int n = patches.front().degree();
+  auto patch = [&patches](std::uint32_t f) -> const TS::Bezier_triangle<Exact, Value>& {
+    return patches[f];
+  };
+  const TS::Ck_certificate before = TS::certify_Ck(domain, patch, job.order);
+  timings.set("check_before", clock.lap());
+  out << "patch network " << job.input << ": " << domain.number_of_vertices() << " vertices, "
+      << domain.number_of_faces() << " patches of degree " << n << " ("
+      << (TS::Value_traits<Value>::dimension == 1 ? "functional" : "parametric") << "), "
+      << domain.number_of_interior_edges() << " interior edges\n"
+      << "  before: " << order_summary(before) << "\n";
+
+  const TS::Network_adjustment adjustment = TS::adjust_network(domain, patches, job.order);
+  timings.set("adjust", clock.lap());
+  const TS::Ck_certificate after = TS::certify_Ck(domain, patch, job.order);
+  const TS::C1_certificate c1 = TS::certify_C1(domain, patch);
+  timings.set("certify", clock.lap());
+  out << "  adjustment to C^" << job.order << " (exact): moved "
+      << adjustment.number_of_touched_points() << " control points across "
+      << adjustment.number_of_changed_edges() << " edges and around " << adjustment.vertices.size()
+      << " vertices\n"
+      << "  after: " << order_summary(after) << "\n";
+  if (job.order == 1)
+    out << "  " << c1.summary();
+  else
+    out << "  C^" << job.order
+        << " certificate (exact rational arithmetic): " << (after.certified ? "PASSED" : "FAILED")
+        << "\n";
+
+  if (!job.output.empty()) {
+    std::ofstream output = open_output(job.output);
+    TS::write_spline_file(output, domain, patches);
+    out << "  wrote " << job.output << "\n";
+    timings.set("write", clock.lap());
+  }
+  timings.set("total", total.lap());
+
+  Json report = Json::object();
+  report.set("input", job.input);
+  report.set("number_type", "exact");
+  report.set("dimension", TS::Value_traits<Value>::dimension);
+  report.set("degree", n);
+  report.set("order", job.order);
+  report.set("minimum_degree", TS::minimum_degree_for_network_continuity(job.order));
+  report.set("vertices", domain.number_of_vertices());
+  report.set("faces", domain.number_of_faces());
+  report.set("interior_edges", domain.number_of_interior_edges());
+  report.set("before", continuity_json(before));
+  report.set("adjustment", adjustment_json(adjustment, true));
+  report.set("after", continuity_json(after));
+  report.set("certified_ck", after.certified);
+  report.set("certified_c1", c1.certified);
+  report.set("max_c1_residual", c1.max_residual);
+  report.set("output", job.output.empty() ? Json() : Json(job.output));
+  report.set("timings_seconds", timings);
+  if (!job.report.empty()) {
+    std::ofstream file_out = open_output(job.report);
+    report.write(file_out);
+    file_out << '\n';
+  }
+  return {report, after.certified};
+}
+
+template <class K>
+struct Input {
+  TS::Planar_domain<K> domain;
+  std::vector<typename K::FT> values;
+  std::string kind;
+};
+
+template <class K>
+Input<K> read_input(const std::string& path) {
+  const std::string ext = lowercase_extension(path);
+  if (ext == "xyz" || ext == "txt") {
+    std::ifstream in = open_input(path);
+    const TS::Scattered_data<K> data = TS::read_xyz<K>(in, path);
+    auto [domain, values] = TS::delaunay_domain(data);
+    return {std::move(domain), std::move(values), "scattered points, Delaunay triangulation"};
+  }
+  if (ext == "off" || ext == "obj" || ext == "ply" || ext == "stl") {
+    auto [domain, values] = TS::read_mesh_domain<K>(path);
+    return {std::move(domain), std::move(values), "triangle mesh, (x, y) as the domain"};
+  }
+  throw TS::Invalid_input("'" + path + "': unknown input format '." + ext +
+                          "' (expected .xyz for scattered points, or .off/.obj/.ply/.stl)");
+}
+
+template <class K>
+Job_result mann(const Mann_job& job, std::ostream& out) {
+  using FT = typename K::FT;
+  Stopwatch clock, total;
+  Json timings = Json::object();
+  Input<K> input = read_input<K>(job.input);
+  timings.set("read_and_triangulate", clock.lap());
+  const TS::Planar_domain<K>& domain = input.domain;
+
+  const int order = TS::mann_derivative_order(job.degree);
+  const auto jets = TS::estimate_vertex_derivatives(domain, input.values, order);
+  timings.set("estimate_derivatives", clock.lap());
+  const TS::Mann_interpolant<K> interpolant = TS::mann_interpolant(domain, jets, job.degree);
+  timings.set("interpolant", clock.lap());
+  const auto& patches = interpolant.patches;
+  auto patch = [&patches](std::uint32_t f) -> const TS::Bezier_triangle<K>& { return patches[f]; };
+
+  // Double builds: residuals are round-off, accepted up to a small multiple of the largest
+  // control value (C^1: 1e-10, as `tspline c1`; C^k: 1e-8); exact builds: proofs.
+  double scale = 1;
+  for (const auto& p : patches)
+    for (const FT& v : p.control_points())
+      scale = (std::max)(scale, TS::max_abs_coordinate(v));
+  const TS::C1_certificate c1 = TS::certify_C1(domain, patch, 1e-10 * scale);
+  const TS::Ck_certificate ck = TS::certify_Ck(domain, patch, interpolant.continuity, 1e-8 * scale);
+  timings.set("certify", clock.lap());
+
+  // Interpolation error at the data points: the corner values of the incident patches.
+  double max_vertex_error = 0;
+  for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const std::uint32_t v = domain.face(f)[c];
+      const FT difference = patches[f].evaluate(domain.point(v)) - input.values[v];
+      max_vertex_error = (std::max)(max_vertex_error, std::abs(CGAL::to_double(difference)));
+    }
+  timings.set("vertex_error", clock.lap());
+
+  Json report = Json::object();
+  report.set("input", job.input);
+  report.set("input_kind", input.kind);
+  report.set("number_type", job.exact ? "exact" : "double");
+  report.set("degree", job.degree);
+  report.set("continuity", interpolant.continuity);
+  report.set("derivative_order", order);
+  report.set("derivatives", "estimated by local polynomial least squares");
+  report.set("vertices", domain.number_of_vertices());
+  report.set("faces", domain.number_of_faces());
+  report.set("interior_edges", domain.number_of_interior_edges());
+  report.set("boundary_edges", domain.number_of_boundary_edges());
+  // certified_c1 is a proof: exact builds only. Double builds report the tolerance check.
+  report.set("certified_c1", c1.exact && c1.certified);
+  report.set("certificate_exact", c1.exact);
+  report.set("c1_within_tolerance", c1.certified);
+  report.set("c1_tolerance", c1.tolerance);
+  report.set("max_c1_residual", c1.max_residual);
+  report.set("failed_edges", c1.failed_edges);
+  report.set("ck", continuity_json(ck));
+  report.set("max_vertex_error", max_vertex_error);
+  // Summary only: every interior edge moves points, the list would be as long as the mesh.
+  report.set("adjustment", adjustment_json(interpolant.adjustment, false));
+
+  if (!job.mesh.empty()) {
+    CGAL::Surface_mesh<Fast::Point_3> mesh;
+    const auto stats = TS::tessellate(domain, patch, job.levels, mesh);
+    TS::write_mesh(job.mesh, mesh);
+    Json m = Json::object();
+    m.set("path", job.mesh);
+    m.set("levels", job.levels);
+    m.set("vertices", stats.vertices);
+    m.set("faces", stats.faces);
+    report.set("mesh", m);
+    timings.set("tessellate_and_write", clock.lap());
+  }
+  if (!job.save.empty()) {
+    std::ofstream file = open_output(job.save);
+    TS::write_spline_file(file, domain, patches);
+    report.set("saved", job.save);
+    timings.set("save", clock.lap());
+  }
+  timings.set("total", total.lap());
+  report.set("timings_seconds", timings);
+
+  out << "Mann interpolant over " << input.kind << "\n"
+      << "  domain: " << domain.number_of_vertices() << " vertices, " << domain.number_of_faces()
+      << " triangles, " << domain.number_of_interior_edges() << " interior edges\n"
+      << "  derivatives up to order " << order
+      << " estimated at every vertex (local least squares)\n"
+      << "  degree " << job.degree << ", C^" << interpolant.continuity << " adjustment: moved "
+      << interpolant.adjustment.number_of_touched_points() << " control points across "
+      << interpolant.adjustment.number_of_changed_edges()
+      << " edges, arithmetic: " << (job.exact ? "exact rationals" : "double") << "\n"
+      << "  largest interpolation error at the data points: " << max_vertex_error << "\n"
+      << "  " << c1.summary();
+  if (interpolant.continuity > 1)
+    out << "  C^" << interpolant.continuity << ": "
+        << (ck.certified ? (ck.exact ? "PASSED (exact)" : "passed (tolerance)") : "FAILED") << "\n";
+  if (!c1.exact)
+    out << "  (double build: use --exact for an exact proof of C^1)\n";
+  if (!job.report.empty()) {
+    std::ofstream file = open_output(job.report);
+    report.write(file);
+    file << '\n';
+  }
+  return {report, c1.certified && ck.certified};
+}
+
+} // namespace
+
+Job_result run_adjust_job(const Adjust_job& job, std::ostream& out) {
+  // The header says the dimension: peek at it, then read the whole file exactly.
+  std::ifstream in = open_input(job.input);
+  std::string line;
+  int dimension = 1;
+  while (std::getline(in, line)) {
+    const auto tokens = TS::internal::tokens_of_line(line);
+    if (tokens.size() == 2 && tokens[0] == "dimension") {
+      dimension = tokens[1] == "3" ? 3 : 1;
+      break;
+    }
+  }
+  in.clear();
+  in.seekg(0);
+  return dimension == 3 ? adjust_file<Exact::Vector_3>(in, job, out)
+                        : adjust_file<Exact::FT>(in, job, out);
+}
+
+Job_result run_mann_job(const Mann_job& job, std::ostream& out) {
+  return job.exact ? mann<Exact>(job, out) : mann<Fast>(job, out);
+}
+
+} // namespace tspline

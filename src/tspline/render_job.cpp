@@ -1,0 +1,383 @@
+// tspline render: spline or mesh -> Surface_mesh with normals and curvatures -> tspline_render
+// -> PNG, coloured PLY, JSON report. Also the pictures at the end of `tspline demo`.
+
+#include "render_job.h"
+#include "files.h"
+
+#include "render/control_net.h"
+#include "render/surface_mesh_adapter.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
+#include <CGAL/Triangular_spline/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/IO/spline_file.h>
+#include <CGAL/Triangular_spline/tessellate.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+namespace tspline {
+namespace {
+
+namespace TS = CGAL::Triangular_spline;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Surface_mesh = CGAL::Surface_mesh<K::Point_3>;
+
+// Default tessellation budget: smooth at any picture size up to ~1920x1080, well under a second.
+constexpr std::size_t default_triangle_budget = std::size_t(1) << 18;
+// Tessellating or drawing 2^21 triangles takes about a second (0.3 s and 0.25 s per 10^6
+// measured at 1920x1080): larger stages are announced on a terminal.
+constexpr std::size_t progress_threshold = std::size_t(1) << 21;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Progress lines on stderr, only for long stages and only when stderr is a terminal.
+class Progress {
+public:
+  explicit Progress(bool enabled) : m_enabled(enabled && isatty(STDERR_FILENO) == 1) {}
+  void begin(const std::string& what, std::size_t triangles) {
+    m_active = m_enabled && triangles >= progress_threshold;
+    m_start = std::chrono::steady_clock::now();
+    if (m_active)
+      std::cerr << "tspline render: " << what << " ..." << std::flush;
+  }
+  void end() {
+    if (m_active)
+      std::cerr << " " << seconds_since(m_start) << " s\n";
+    m_active = false;
+  }
+
+private:
+  bool m_enabled, m_active = false;
+  std::chrono::steady_clock::time_point m_start;
+};
+
+int automatic_levels(std::size_t faces) {
+  int levels = 0;
+  while (levels < 6 && faces * (std::size_t(1) << (2 * (levels + 1))) <= default_triangle_budget)
+    ++levels;
+  return levels;
+}
+
+// What the renderer needs from an input, and what the report says about it.
+struct Scene {
+  Surface_mesh mesh;
+  render::Net net;
+  std::string kind;
+  int levels = -1; // tessellation levels, -1 for a mesh input
+  std::size_t patches = 0;
+  int degree = 0;
+  double tessellation_seconds = 0;
+};
+
+template <class Value>
+void tessellate_spline_file(std::istream& in, const std::string& path, const Render_job& job,
+                            Progress& progress, Scene& scene) {
+  const TS::Spline_file<K, Value> file = TS::read_spline_file<K, Value>(in, path);
+  const std::size_t faces = file.domain.number_of_faces();
+  auto patch = [&file](std::size_t f) -> const TS::Bezier_triangle<K, Value>& {
+    return file.patches[f];
+  };
+  scene.patches = faces;
+  scene.degree = file.patches.empty() ? 0 : file.patches.front().degree();
+  scene.levels = job.levels ? *job.levels : automatic_levels(faces);
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t triangles = faces << (2 * scene.levels);
+  progress.begin("tessellating " + std::to_string(triangles) + " triangles", triangles);
+  TS::tessellate(file.domain, patch, scene.levels, scene.mesh);
+  progress.end();
+  scene.tessellation_seconds = seconds_since(start);
+  if (job.options.mode == render::Mode::Net)
+    scene.net = render::control_net(faces, patch);
+  scene.kind = std::string("spline (") +
+               (TS::Value_traits<Value>::dimension == 3 ? "parametric" : "functional") +
+               ", degree " + std::to_string(scene.degree) + ")";
+}
+
+Scene load_spline(const Render_job& job, Progress& progress) {
+  std::ifstream in(job.input);
+  if (!in)
+    throw std::runtime_error("cannot open '" + job.input + "'");
+  // The header says whether the values are heights or points: peek, then read the file.
+  std::string line;
+  int dimension = 1;
+  while (std::getline(in, line)) {
+    std::istringstream tokens(line);
+    std::string keyword, value, extra;
+    tokens >> keyword >> value;
+    if (keyword == "dimension" && !(tokens >> extra)) {
+      dimension = value == "3" ? 3 : 1;
+      break;
+    }
+    if (keyword == "vertices" || keyword == "faces")
+      break;
+  }
+  in.clear();
+  in.seekg(0);
+  Scene scene;
+  if (dimension == 3)
+    tessellate_spline_file<K::Vector_3>(in, job.input, job, progress, scene);
+  else
+    tessellate_spline_file<K::FT>(in, job.input, job, progress, scene);
+  return scene;
+}
+
+Scene load_mesh(const Render_job& job) {
+  Scene scene;
+  scene.kind = "mesh";
+  const std::string ext = lowercase_extension(job.input);
+  if (!std::ifstream(job.input))
+    throw std::runtime_error("cannot open '" + job.input + "'");
+  // CGAL's readers print their own diagnostics on std::cerr; ours is the one-line error.
+  struct Silence {
+    std::ostringstream sink;
+    std::streambuf* saved = std::cerr.rdbuf(sink.rdbuf());
+    ~Silence() { std::cerr.rdbuf(saved); }
+  } silence;
+  bool ok = false;
+  if (ext == "ply") {
+    // Surface_mesh's own PLY reader keeps every vertex property, e.g. the normals and
+    // curvatures that `tspline c1 --mesh` writes.
+    std::ifstream in(job.input, std::ios::binary);
+    ok = CGAL::IO::read_PLY(in, scene.mesh);
+  } else {
+    ok = CGAL::IO::read_polygon_mesh(job.input, scene.mesh);
+  }
+  if (!ok)
+    throw std::runtime_error("cannot read '" + job.input +
+                             "' as a polygon mesh (it must be a valid, manifold ." + ext + ")");
+  return scene;
+}
+
+Json vector_json(const render::Vector& v) {
+  Json a = Json::array();
+  for (double x : v)
+    a.push_back(x);
+  return a;
+}
+
+// Renders `mesh` (+ `net`) and writes the PNG; returns the renderer's report.
+render::Report render_to_png(const Surface_mesh& mesh, const render::Net* net,
+                             const render::Options& options, const std::string& path) {
+  render::Report report;
+  const render::Mesh plain = render::to_render_mesh(mesh);
+  const render::Image image = render::render(plain, net, options, &report);
+  render::write_png(path, image);
+  return report;
+}
+
+} // namespace
+
+Json run_render_job(const Render_job& job, std::ostream& out) {
+  const auto start = std::chrono::steady_clock::now();
+  const render::Mode mode = job.options.mode;
+  const std::string ext = lowercase_extension(job.input);
+  Progress progress(!job.quiet);
+  Scene scene;
+  if (ext == "spline") {
+    scene = load_spline(job, progress);
+  } else if (ext == "ply" || ext == "off" || ext == "obj" || ext == "stl") {
+    if (job.levels)
+      throw Usage_error("--levels applies to .spline inputs only");
+    scene = load_mesh(job);
+    const bool has_curvature =
+        scene.mesh.property_map<Surface_mesh::Vertex_index, double>("v:gaussian_curvature").second;
+    if ((mode == render::Mode::Curvature || !job.ply.empty()) && !has_curvature)
+      throw TS::Invalid_input(
+          "'" + job.input + "' is a plain mesh: " +
+          (mode == render::Mode::Curvature ? std::string("curvature mode") : std::string("--ply")) +
+          " needs a .spline input (Gaussian curvature from the exact patch derivatives) or a PLY "
+          "with per-vertex gaussian_curvature written by tspline");
+    if (mode == render::Mode::Net)
+      throw TS::Invalid_input("'" + job.input +
+                              "' is a mesh: net mode needs a .spline input (control points)");
+  } else {
+    throw TS::Invalid_input("'" + job.input + "': unknown input format '." + ext +
+                            "' (expected .spline, or a mesh .ply/.off/.obj/.stl)");
+  }
+  if (scene.mesh.number_of_faces() == 0)
+    throw TS::Invalid_input("'" + job.input + "' has no triangles to draw");
+
+  progress.begin("rendering " + std::to_string(scene.mesh.number_of_faces()) + " triangles",
+                 scene.mesh.number_of_faces());
+  const render::Report rendered = render_to_png(
+      scene.mesh, mode == render::Mode::Net ? &scene.net : nullptr, job.options, job.output);
+  progress.end();
+
+  if (!job.ply.empty()) {
+    if (!render::add_curvature_colours(scene.mesh, rendered.curvature_range))
+      throw TS::Invalid_input("--ply needs curvatures, which '" + job.input + "' does not have");
+    TS::write_mesh(job.ply, scene.mesh);
+  }
+  const double total = seconds_since(start);
+
+  Json report = Json::object();
+  report.set("input", job.input);
+  report.set("input_kind", scene.kind);
+  report.set("output", job.output);
+  report.set("mode", render::mode_name(mode));
+  Json size = Json::array();
+  size.push_back(job.options.width);
+  size.push_back(job.options.height);
+  report.set("size", size);
+  Json view = Json::array();
+  view.push_back(job.options.azimuth);
+  view.push_back(job.options.elevation);
+  report.set("view", view);
+  report.set("projection", job.options.perspective ? "perspective" : "orthographic");
+  if (job.options.light)
+    report.set("light", vector_json(*job.options.light));
+  if (mode == render::Mode::Isophotes)
+    report.set("bands", job.options.bands);
+  report.set("supersampling", job.options.supersampling);
+  if (scene.levels >= 0) {
+    report.set("patches", scene.patches);
+    report.set("degree", scene.degree);
+    report.set("levels", scene.levels);
+  }
+  report.set("vertices", scene.mesh.number_of_vertices());
+  report.set("triangles", rendered.triangles);
+  report.set("covered_pixels", rendered.covered_pixels);
+  if (mode == render::Mode::Net) {
+    report.set("net_points", scene.net.points.size());
+    report.set("net_segments", scene.net.segments.size());
+  }
+  if (rendered.has_curvature) {
+    Json curvature = Json::object();
+    curvature.set("min", rendered.curvature_min);
+    curvature.set("max", rendered.curvature_max);
+    curvature.set("colour_range", rendered.curvature_range);
+    curvature.set("colour_range_from",
+                  rendered.curvature_range_from_user ? "--range" : "98th percentile of |K|");
+    report.set("gaussian_curvature", curvature);
+  } else {
+    report.set("gaussian_curvature", Json());
+  }
+  if (!job.ply.empty())
+    report.set("ply", job.ply);
+  Json seconds = Json::object();
+  seconds.set("tessellate", scene.tessellation_seconds);
+  seconds.set("render", rendered.seconds);
+  seconds.set("total", total);
+  report.set("seconds", seconds);
+  if (!job.report.empty()) {
+    std::ofstream file(job.report);
+    if (!file)
+      throw std::runtime_error("cannot write '" + job.report + "'");
+    report.write(file);
+    file << '\n';
+  }
+
+  if (!job.quiet) {
+    char line[512];
+    std::snprintf(line, sizeof line, "wrote %s (%dx%d, %s, %zu triangles", job.output.c_str(),
+                  job.options.width, job.options.height, render::mode_name(mode).c_str(),
+                  rendered.triangles);
+    out << line;
+    if (mode == render::Mode::Curvature) {
+      std::snprintf(line, sizeof line, "; K in [%.3g, %.3g], colours saturate at |K| = %.3g",
+                    rendered.curvature_min, rendered.curvature_max, rendered.curvature_range);
+      out << line;
+    }
+    if (mode == render::Mode::Net) {
+      out << "; " << scene.net.points.size() << " control points";
+    }
+    std::snprintf(line, sizeof line, ") in %.2f s\n", total);
+    out << line;
+    if (!job.ply.empty())
+      out << "wrote " << job.ply << " (per-vertex curvature colours and scalars)\n";
+  }
+  return report;
+}
+
+// ---------------------------------------------------------------------------------------
+// tspline demo pictures
+
+namespace {
+
+// A small C^1 quintic spline to show prescription and propagation: the 3x3 grid on [0,2]^2
+// cut into 8 triangles around the centre ("union jack"). Each boundary mid-vertex then has
+// one interior edge whose apexes are collinear with it: a degenerate frame (Xu §4.4.4).
+// The free control points sample a smooth bump at their domain points; propagation sets
+// the rest.
+TS::C1_quintic_spline<K> small_example() {
+  std::vector<K::Point_2> points;
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 2; ++i)
+      points.emplace_back(i, j);
+  auto id = [](int i, int j) { return static_cast<std::uint32_t>(3 * j + i); };
+  const std::uint32_t centre = id(1, 1);
+  const std::uint32_t ring[8] = {id(0, 0), id(1, 0), id(2, 0), id(2, 1),
+                                 id(2, 2), id(1, 2), id(0, 2), id(0, 1)};
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for (int k = 0; k < 8; ++k)
+    triangles.push_back({{ring[k], ring[(k + 1) % 8], centre}});
+  TS::C1_quintic_spline<K> spline(TS::Planar_domain<K>(std::move(points), std::move(triangles)));
+  for (auto s : spline.free_slots()) {
+    const K::Point_2 p = spline.domain_point(s);
+    const double dx = p.x() - 1.1, dy = p.y() - 0.9;
+    spline.set_free_value(s, 0.9 / (1 + 1.5 * (dx * dx + dy * dy)) + 0.15 * p.x());
+  }
+  spline.propagate();
+  return spline;
+}
+
+} // namespace
+
+void render_demo_pictures(const std::filesystem::path& dir, const std::string& spline_path,
+                          std::ostream& out) {
+  Render_job job;
+  job.input = spline_path;
+  job.quiet = true;
+  job.options.width = 640;
+  job.options.height = 480;
+  // From the front left and fairly high: the L-shape, its hole and the rising arm all show.
+  job.options.azimuth = -20;
+  job.options.elevation = 60;
+  out << "\npictures (tspline render):\n";
+  for (const auto& [mode, name] :
+       {std::pair<render::Mode, const char*>{render::Mode::Shaded, "demo_shaded.png"},
+        {render::Mode::Curvature, "demo_curvature.png"},
+        {render::Mode::Isophotes, "demo_isophotes.png"}}) {
+    job.options.mode = mode;
+    job.output = (dir / name).string();
+    run_render_job(job, out);
+    out << "  " << job.output << ": " << render::mode_name(mode) << "\n";
+  }
+
+  const TS::C1_quintic_spline<K> spline = small_example();
+  const auto& domain = spline.domain();
+  auto patch = [&spline](std::size_t f) { return spline.patch(static_cast<std::uint32_t>(f)); };
+  auto status = [&spline](std::size_t f, const TS::Multi_index& index) {
+    return spline.is_free(spline.slot(static_cast<std::uint32_t>(f), index))
+               ? render::Point_status::Prescribed
+               : render::Point_status::Propagated;
+  };
+  const render::Net net = render::control_net(domain.number_of_faces(), patch, status);
+  Surface_mesh mesh;
+  TS::tessellate(
+      domain, [&spline](std::uint32_t f) { return spline.patch(f); }, 4, mesh);
+  render::Options options = job.options;
+  options.mode = render::Mode::Net;
+  options.azimuth = -25;
+  options.elevation = 38;
+  const std::string path = (dir / "demo_net.png").string();
+  render_to_png(mesh, &net, options, path);
+  std::size_t prescribed = 0;
+  for (const auto& p : net.points)
+    prescribed += p.status == render::Point_status::Prescribed ? 1 : 0;
+  out << "  " << path << ": control net of a " << domain.number_of_faces()
+      << "-triangle C^1 quintic spline with " << spline.degenerate_frames().size()
+      << " degenerate frames, " << prescribed << " prescribed and "
+      << net.points.size() - prescribed << " propagated control points\n";
+}
+
+} // namespace tspline
