@@ -24,7 +24,8 @@ int run_c1(const std::vector<std::string>& args) {
   parser.add_option("input", "FILE", "scattered points (.xyz) or triangle mesh");
   parser.add_option("fit", "MODE",
                     "approximate (polar blend of vertex data), interpolate (corners through the "
-                    "data), tangent (interpolate values and estimated gradients)",
+                    "data), tangent (interpolate values and estimated gradients), lsq "
+                    "(interpolate; all control points closest to the tangent planes)",
                     "approximate");
   parser.add_option("fix", "FIX",
                     "degenerate frames: reroute (local re-routing) or perturb "

@@ -2,6 +2,7 @@
 // propagate -> certify -> outputs. Instantiated for double and for exact rationals.
 
 #include "c1_job.h"
+#include "files.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
@@ -33,41 +34,6 @@ namespace {
 namespace TS = CGAL::Triangular_spline;
 using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
-
-class Stopwatch {
-public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double s = std::chrono::duration<double>(now - m_last).count();
-    m_last = now;
-    return s;
-  }
-
-private:
-  std::chrono::steady_clock::time_point m_last = std::chrono::steady_clock::now();
-};
-
-std::string lowercase_extension(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
-  for (char& c : ext)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-std::ifstream open_input(const std::string& path) {
-  std::ifstream in(path);
-  if (!in)
-    throw std::runtime_error("cannot open '" + path + "'");
-  return in;
-}
-
-std::ofstream open_output(const std::string& path) {
-  std::ofstream out(path);
-  if (!out)
-    throw std::runtime_error("cannot write '" + path + "'");
-  return out;
-}
 
 template <class K>
 struct Input {
@@ -152,6 +118,7 @@ Json run(const C1_job& job, std::ostream& out) {
 
   const TS::Fit fit = job.fit == "interpolate" ? TS::Fit::Interpolate
                       : job.fit == "tangent"   ? TS::Fit::Tangent_planes
+                      : job.fit == "lsq"       ? TS::Fit::Least_squares
                                                : TS::Fit::Approximate;
   Spline spline(std::move(domain), fit == TS::Fit::Approximate
                                        ? TS::Corner_frame::Symmetric_stars
@@ -354,8 +321,10 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
 } // namespace
 
 Json run_c1_job(const C1_job& job, std::ostream& out) {
-  if (job.fit != "approximate" && job.fit != "interpolate" && job.fit != "tangent")
-    throw Usage_error("--fit must be approximate, interpolate or tangent, not '" + job.fit + "'");
+  if (job.fit != "approximate" && job.fit != "interpolate" && job.fit != "tangent" &&
+      job.fit != "lsq")
+    throw Usage_error("--fit must be approximate, interpolate, tangent or lsq, not '" + job.fit +
+                      "'");
   if (job.fix != "reroute" && job.fix != "perturb")
     throw Usage_error("--fix must be reroute or perturb, not '" + job.fix + "'");
   if (job.levels < 0 || job.levels > 8)

@@ -4,6 +4,7 @@
 #include "c1_job.h"
 #include "cli.h"
 #include "commands.h"
+#include "render_job.h"
 
 #include <filesystem>
 #include <iostream>
@@ -33,7 +34,7 @@ int run_demo(const std::vector<std::string>& args) {
 
   C1_job job;
   job.exact = true;
-  job.fit = "approximate";
+  job.fit = "lsq"; // interpolation, control points closest to the data's tangent planes
   job.levels = static_cast<int>(parsed.integer("levels"));
   job.dimension = true;
   job.mesh = (dir / "demo_surface.ply").string();
@@ -42,6 +43,7 @@ int run_demo(const std::vector<std::string>& args) {
   std::cout << "tspline demo: the main job on embedded data\n\n";
   run_c1_job(job, std::cout);
   std::cout << "\nwrote " << job.mesh << ", " << job.save << " and " << job.report << "\n";
+  render_demo_pictures(dir, job.save, std::cout);
   return 0;
 }
 

@@ -290,7 +290,7 @@ TEST(Spline, InterpolationAndLinearPrecision) {
       data.push_back(random.rational<FT>());
       linear.push_back(FT(3) * p.x() - FT(2) / FT(7) * p.y() + FT(5));
     }
-    for (Fit fit : {Fit::Interpolate, Fit::Tangent_planes}) {
+    for (Fit fit : {Fit::Interpolate, Fit::Tangent_planes, Fit::Least_squares}) {
       C1_quintic_spline<K> spline(domain, Corner_frame::Corner_and_two_stars);
       TS::fit_vertex_data(spline, data, fit);
       for (Index f = 0; f < domain.number_of_faces(); ++f)
@@ -444,4 +444,45 @@ TEST(Spline, ExtremeScalesInDouble) {
       largest = (std::max)(largest, std::abs(v));
     EXPECT_LT(certify(spline).max_residual, 1e-12 * largest) << exponent;
   }
+}
+
+TEST(Spline, LeastSquaresFitKeepsPropagatedPointsNearTheData) {
+  // Data from a smooth function on a Delaunay triangulation with thin triangles: the
+  // least-squares choice must not overshoot where propagation weights are large, must
+  // reproduce linear data (up to the double solve), and in exact arithmetic stays exactly C^1.
+  const auto domain = random_delaunay<Epick>(60, 17);
+  std::vector<double> smooth, linear;
+  for (const auto& p : domain.points()) {
+    smooth.push_back(std::sin(0.3 * p.x()) * std::cos(0.2 * p.y()));
+    linear.push_back(2 * p.x() - 0.5 * p.y() + 1);
+  }
+  auto spread = [](const C1_quintic_spline<Epick>& s) {
+    double largest = 0;
+    for (double v : s.values())
+      largest = (std::max)(largest, std::abs(v));
+    return largest;
+  };
+  C1_quintic_spline<Epick> lsq(domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(lsq, smooth, Fit::Least_squares);
+  C1_quintic_spline<Epick> tangent(domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(tangent, smooth, Fit::Tangent_planes);
+  EXPECT_LT(spread(lsq), 1.5) << "data in [-1, 1]";
+  EXPECT_LE(spread(lsq), spread(tangent));
+  EXPECT_LT(certify(lsq).max_residual, 1e-10);
+  TS::fit_vertex_data(lsq, linear, Fit::Least_squares);
+  for (std::uint32_t f = 0; f < domain.number_of_faces(); f += 5) {
+    const auto& v = domain.face(f);
+    const auto x =
+        CGAL::barycenter(domain.point(v[0]), 1, domain.point(v[1]), 2, domain.point(v[2]), 3);
+    EXPECT_NEAR(lsq.patch(f).evaluate(x), 2 * x.x() - 0.5 * x.y() + 1, 1e-9);
+  }
+  // Exact kernel: the double solution, converted exactly, propagates to an exact C^1 spline.
+  const auto exact_domain = random_delaunay<Exact_kernel>(30, 17);
+  std::vector<Exact_kernel::FT> data;
+  Random_rationals random(4);
+  for (std::size_t i = 0; i < exact_domain.number_of_vertices(); ++i)
+    data.push_back(random.rational<Exact_kernel::FT>());
+  C1_quintic_spline<Exact_kernel> exact(exact_domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(exact, data, Fit::Least_squares);
+  EXPECT_TRUE(certify(exact).certified);
 }

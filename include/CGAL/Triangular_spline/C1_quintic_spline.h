@@ -452,8 +452,7 @@ private:
         const Point_2& c = point_of(f[std::size_t((i + 2) % 3)]);
         const double ux = CGAL::to_double(b.x() - a.x()), uy = CGAL::to_double(b.y() - a.y());
         const double wx = CGAL::to_double(c.x() - a.x()), wy = CGAL::to_double(c.y() - a.y());
-        const double sine =
-            std::abs(ux * wy - uy * wx) / (std::hypot(ux, uy) * std::hypot(wx, wy));
+        const double sine = std::abs(ux * wy - uy * wx) / (std::hypot(ux, uy) * std::hypot(wx, wy));
         worst = (std::min)(worst, sine);
       }
       // Exactly non-collinear but degenerate in double: still valid, ranked last.
@@ -633,19 +632,33 @@ private:
                            m_domain.point(d.apex_right)));
     }
 
-    // 5. The second flip point of every regular interior edge: flip_right is the image of
-    // p_right in the frame (flip_left, edge-middle near lo, edge-middle near hi).
+    // 5. The second flip point of every regular interior edge: one flip point is the image
+    // of its apex in the frame (other flip, edge-middle near lo, edge-middle near hi). The
+    // weight of the prescribed flip is the ratio of the apexes' distances to the edge, so the
+    // flip on the side of the farther apex is prescribed: that weight is then at most 1.
+    auto orientation_area = [&](Index a, Index b, Index c) {
+      const Point_2 &pa = m_domain.point(a), &pb = m_domain.point(b), &pc = m_domain.point(c);
+      return CGAL::abs((pb.x() - pa.x()) * (pc.y() - pa.y()) -
+                       (pb.y() - pa.y()) * (pc.x() - pa.x()));
+    };
     for (Index e = 0; e < E; ++e) {
       if (m_domain.is_boundary_edge(e) || degenerate_end[e] != Domain::null_index)
         continue;
       const auto& ends = m_domain.edge(e);
       const auto& ef = m_domain.edge_faces(e);
-      m_free[flip_slot(ef[0], e)] = 1;
-      add_rule(flip_slot(ef[1], e),
-               {{flip_slot(ef[0], e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
-               barycentric(m_domain.point(m_domain.opposite_vertex(ef[1], e)),
-                           m_domain.point(m_domain.opposite_vertex(ef[0], e)),
-                           m_domain.point(ends[0]), m_domain.point(ends[1])));
+      const Index apex_left = m_domain.opposite_vertex(ef[0], e);
+      const Index apex_right = m_domain.opposite_vertex(ef[1], e);
+      const bool left_free = !(orientation_area(ends[0], ends[1], apex_right) >
+                               orientation_area(ends[0], ends[1], apex_left));
+      const Index free_face = left_free ? ef[0] : ef[1], other_face = left_free ? ef[1] : ef[0];
+      const Index free_apex = left_free ? apex_left : apex_right;
+      const Index other_apex = left_free ? apex_right : apex_left;
+      m_free[flip_slot(free_face, e)] = 1;
+      add_rule(
+          flip_slot(other_face, e),
+          {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
+          barycentric(m_domain.point(other_apex), m_domain.point(free_apex),
+                      m_domain.point(ends[0]), m_domain.point(ends[1])));
     }
 
     for (Slot s = 0; s < m_free.size(); ++s)

@@ -8,6 +8,7 @@
 #include <CGAL/Origin.h>
 #include <CGAL/number_utils.h>
 
+#include <array>
 #include <cmath>
 #include <type_traits>
 
@@ -38,6 +39,8 @@ struct Value_traits {
   static Value zero() { return Value(0); }
   /// returns coordinate `c` of `v`
   static const FT& coordinate(const Value& v, int) { return v; }
+  /// returns the value with the given coordinates
+  static Value from_coordinates(const std::array<FT, 1>& c) { return c[0]; }
 };
 
 template <class Vector>
@@ -47,6 +50,7 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
   static constexpr int dimension = 3;
   static Vector zero() { return Vector(NULL_VECTOR); }
   static FT coordinate(const Vector& v, int c) { return v[c]; }
+  static Vector from_coordinates(const std::array<FT, 3>& c) { return Vector(c[0], c[1], c[2]); }
 };
 
 template <class Vector>
@@ -56,6 +60,7 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
   static constexpr int dimension = 2;
   static Vector zero() { return Vector(NULL_VECTOR); }
   static FT coordinate(const Vector& v, int c) { return v[c]; }
+  static Vector from_coordinates(const std::array<FT, 2>& c) { return Vector(c[0], c[1]); }
 };
 
 /*!

@@ -7,6 +7,9 @@
 #include <CGAL/Triangular_spline/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <array>
 #include <string>
@@ -34,7 +37,18 @@ enum class Fit {
   /// (averaged on ties), at its domain point, the degree-1 case of Mann's nearest-vertex
   /// rule; this tilts the corner frames along the data (Xu §4.4.5) instead of
   /// flattening them. Needs `Corner_frame::Corner_and_two_stars`
-  Tangent_planes
+  Tangent_planes,
+  /// interpolation of the values; the other free points are chosen so that ALL control
+  /// points (free and propagated) are as close as possible, in least squares, to the
+  /// `Tangent_planes` targets: every control value is a linear function of the free ones,
+  /// and the normal equations are solved with a sparse Cholesky factorization (Eigen). This
+  /// is the remedy for the amplification of Xu §4.4.5: thin frames propagate with large
+  /// weights, and the least-squares choice keeps the propagated points near the data
+  /// instead of letting them overshoot. The solve runs in `double`; the free values are
+  /// then converted to `FT` and propagated in `FT`, so an exact spline is still exactly C^1
+  /// (linear data is then reproduced up to the solve's rounding). Needs
+  /// `Corner_frame::Corner_and_two_stars`
+  Least_squares
 };
 
 /*!
@@ -76,6 +90,95 @@ std::vector<std::array<Value, 2>> estimate_gradients(const Planar_domain<GeomTra
   return gradients;
 }
 
+namespace internal {
+
+// Least-squares choice of the free values (Fit::Least_squares): corners fixed to the data,
+// every slot's value written as a sparse linear combination of the free slots by running the
+// rules symbolically, then min sum_s |value(s) - target(s)|^2 by the normal equations.
+template <class GeomTraits, class Value, class Target>
+void least_squares_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
+                               const std::vector<Value>& values, const Target& target) {
+  using FT = typename GeomTraits::FT;
+  using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
+  using Traits = Value_traits<Value>;
+  constexpr int D = Traits::dimension;
+  const std::size_t n = spline.number_of_slots();
+  const std::size_t V = spline.domain().number_of_vertices();
+  // Unknowns: the free slots that are not corners (corners interpolate the data).
+  std::vector<int> column(n, -1);
+  std::size_t unknowns = 0;
+  for (Slot s : spline.free_slots())
+    if (s >= V)
+      column[s] = static_cast<int>(unknowns++);
+  // rows[s]: value(s) = sum rows[s] x + constant[s]
+  std::vector<std::vector<std::pair<int, double>>> rows(n);
+  std::vector<std::array<double, D>> constant(n);
+  for (auto& c : constant)
+    c.fill(0);
+  for (Slot s : spline.free_slots()) {
+    if (s < V)
+      for (int c = 0; c < D; ++c)
+        constant[s][std::size_t(c)] = CGAL::to_double(Traits::coordinate(values[s], c));
+    else
+      rows[s] = {{column[s], 1.0}};
+  }
+  std::vector<std::pair<int, double>> merged;
+  for (const auto& rule : spline.rules()) {
+    merged.clear();
+    std::array<double, D> k;
+    k.fill(0);
+    for (int i = 0; i < rule.size; ++i) {
+      const double w = CGAL::to_double(rule.weights[std::size_t(i)]);
+      const Slot src = rule.sources[std::size_t(i)];
+      for (const auto& [j, a] : rows[src])
+        merged.emplace_back(j, w * a);
+      for (int c = 0; c < D; ++c)
+        k[std::size_t(c)] += w * constant[src][std::size_t(c)];
+    }
+    std::sort(merged.begin(), merged.end());
+    auto& row = rows[rule.target];
+    row.clear();
+    for (const auto& [j, a] : merged) {
+      if (!row.empty() && row.back().first == j)
+        row.back().second += a;
+      else
+        row.emplace_back(j, a);
+    }
+    constant[rule.target] = k;
+  }
+  // Normal equations (M^T M) x = M^T (t - constant).
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Eigen::Index(unknowns), D);
+  for (std::size_t s = 0; s < n; ++s) {
+    const Value t = target(static_cast<Slot>(s));
+    for (const auto& [i, a] : rows[s]) {
+      for (const auto& [j, b] : rows[s])
+        triplets.emplace_back(i, j, a * b);
+      for (int c = 0; c < D; ++c)
+        rhs(i, c) += a * (CGAL::to_double(Traits::coordinate(t, c)) - constant[s][std::size_t(c)]);
+    }
+  }
+  const Eigen::Index size = static_cast<Eigen::Index>(unknowns);
+  Eigen::SparseMatrix<double> normal(size, size);
+  normal.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
+  if (solver.info() != Eigen::Success)
+    throw Invalid_input("fit: the least-squares system could not be factorized");
+  const Eigen::MatrixXd x = solver.solve(rhs);
+  for (Slot s : spline.free_slots()) {
+    if (s < V) {
+      spline.set_free_value(s, values[s]);
+      continue;
+    }
+    std::array<FT, std::size_t(D)> c;
+    for (int d = 0; d < D; ++d)
+      c[std::size_t(d)] = FT(x(column[s], d));
+    spline.set_free_value(s, Traits::from_coordinates(c));
+  }
+}
+
+} // namespace internal
+
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief sets every free control point of `spline` from the data `values` (one per domain
@@ -102,31 +205,37 @@ void fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::ve
     throw Invalid_input("fit: interpolation needs corner points to be prescribed "
                         "(build the spline with Corner_frame::Corner_and_two_stars)");
   std::vector<std::array<Value, 2>> gradients;
-  if (fit == Fit::Tangent_planes)
+  if (fit == Fit::Tangent_planes || fit == Fit::Least_squares)
     gradients = estimate_gradients(domain, values);
-  for (Slot s : spline.free_slots()) {
+  // The value a slot should take from the data: polar blend, or tangent plane of the
+  // nearest corner(s) at the slot's domain point.
+  auto target = [&](Slot s) {
     const auto label = spline.polar_label(s);
     Value v = Value_traits<Value>::zero();
-    if (fit != Fit::Tangent_planes) {
+    if (fit == Fit::Approximate || fit == Fit::Interpolate) {
       for (const auto& [vertex, multiplicity] : label)
         v = v + (FT(multiplicity) / FT(5)) * values[vertex];
-    } else {
-      // Tangent plane of the corner(s) with the largest multiplicity, at the slot's point.
-      int largest = 0;
-      for (const auto& entry : label)
-        largest = (std::max)(largest, entry.second);
-      const auto x = spline.domain_point(s);
-      int ties = 0;
-      for (const auto& [vertex, multiplicity] : label) {
-        if (multiplicity != largest)
-          continue;
-        const FT dx = x.x() - domain.point(vertex).x(), dy = x.y() - domain.point(vertex).y();
-        v = v + values[vertex] + dx * gradients[vertex][0] + dy * gradients[vertex][1];
-        ++ties;
-      }
-      v = (FT(1) / FT(ties)) * v;
+      return v;
     }
-    spline.set_free_value(s, v);
+    int largest = 0;
+    for (const auto& entry : label)
+      largest = (std::max)(largest, entry.second);
+    const auto x = spline.domain_point(s);
+    int ties = 0;
+    for (const auto& [vertex, multiplicity] : label) {
+      if (multiplicity != largest)
+        continue;
+      const FT dx = x.x() - domain.point(vertex).x(), dy = x.y() - domain.point(vertex).y();
+      v = v + values[vertex] + dx * gradients[vertex][0] + dy * gradients[vertex][1];
+      ++ties;
+    }
+    return Value((FT(1) / FT(ties)) * v);
+  };
+  if (fit == Fit::Least_squares) {
+    internal::least_squares_free_values(spline, values, target);
+  } else {
+    for (Slot s : spline.free_slots())
+      spline.set_free_value(s, target(s));
   }
   spline.propagate();
 }

@@ -1,0 +1,40 @@
+#include "files.h"
+
+#include <cctype>
+#include <stdexcept>
+
+namespace tspline {
+
+double Stopwatch::lap() {
+  const auto now = std::chrono::steady_clock::now();
+  const double s = std::chrono::duration<double>(now - m_last).count();
+  m_last = now;
+  return s;
+}
+
+std::string lowercase_extension(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of("/\\");
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::ifstream open_input(const std::string& path) {
+  std::ifstream in(path);
+  if (!in)
+    throw std::runtime_error("cannot open '" + path + "'");
+  return in;
+}
+
+std::ofstream open_output(const std::string& path) {
+  std::ofstream out(path);
+  if (!out)
+    throw std::runtime_error("cannot write '" + path + "'");
+  return out;
+}
+
+} // namespace tspline

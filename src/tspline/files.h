@@ -1,0 +1,32 @@
+// Small helpers shared by the subcommands: timing, file names, opening files with one-line
+// errors. C++17 standard library only.
+
+#ifndef TSPLINE_FILES_H
+#define TSPLINE_FILES_H
+
+#include <chrono>
+#include <fstream>
+#include <string>
+
+namespace tspline {
+
+// Seconds since construction or since the previous lap.
+class Stopwatch {
+public:
+  double lap();
+
+private:
+  std::chrono::steady_clock::time_point m_last = std::chrono::steady_clock::now();
+};
+
+// The extension of the file name (after the last dot of the last path component),
+// lowercase; empty if there is none.
+std::string lowercase_extension(const std::string& path);
+
+// Open a file or throw std::runtime_error("cannot open 'path'" / "cannot write 'path'").
+std::ifstream open_input(const std::string& path);
+std::ofstream open_output(const std::string& path);
+
+} // namespace tspline
+
+#endif // TSPLINE_FILES_H
