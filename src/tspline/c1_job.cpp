@@ -3,6 +3,7 @@
 
 #include "c1_job.h"
 #include "files.h"
+#include "mesh_output.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
@@ -186,15 +187,7 @@ Json run(const C1_job& job, std::ostream& out) {
   report.set("failed_edges", certificate.failed_edges);
 
   if (!job.mesh.empty()) {
-    CGAL::Surface_mesh<Fast::Point_3> mesh;
-    const auto stats = TS::tessellate(d, patch, job.levels, mesh);
-    TS::write_mesh(job.mesh, mesh);
-    Json m = Json::object();
-    m.set("path", job.mesh);
-    m.set("levels", job.levels);
-    m.set("vertices", stats.vertices);
-    m.set("faces", stats.faces);
-    report.set("mesh", m);
+    report.set("mesh", write_tessellated_mesh(d, patch, job.levels, job.mesh));
     timings.set("tessellate_and_write", clock.lap());
   }
   if (!job.save.empty()) {
