@@ -81,10 +81,16 @@ class Bezier_triangle {
 public:
   /// \name Types
   /// @{
+
+  /// the kernel
   using Geom_traits = GeomTraits;
+  /// the number type
   using FT = typename Geom_traits::FT;
+  /// the point type of the domain plane
   using Point_2 = typename Geom_traits::Point_2;
+  /// the vector type of the domain plane
   using Vector_2 = typename Geom_traits::Vector_2;
+  /// the control value type
   using Value_type = Value;
   /// barycentric weights of a point (sum 1) or of a vector (sum 0)
   using Weights = std::array<FT, 3>;
@@ -146,6 +152,7 @@ public:
 
   /// \name Access
   /// @{
+
   /// returns the degree `m`.
   int degree() const { return m_degree; }
   /// returns domain vertex `v` (0: r, 1: s, 2: t).

@@ -182,15 +182,24 @@ class C1_quintic_spline {
 public:
   /// \name Types
   /// @{
+
+  /// the kernel
   using Geom_traits = GeomTraits;
+  /// the number type
   using FT = typename Geom_traits::FT;
+  /// the point type of the domain plane
   using Point_2 = typename Geom_traits::Point_2;
+  /// the triangulated domain
   using Domain = Planar_domain<Geom_traits>;
+  /// index of a vertex, edge or face of the domain
   using Index = typename Domain::Index;
   /// index of a control-point slot
   using Slot = std::uint32_t;
+  /// the quintic patch over one face
   using Patch = Bezier_triangle<Geom_traits, Value>;
+  /// a degenerate frame found in the domain
   using Degenerate_frame = Degenerate_frame_t<Index>;
+  /// an invalid slot index, marking an unused source of a `Rule`
   static constexpr Slot null_slot = (std::numeric_limits<Slot>::max)();
   /// the domain vertices and multiplicities of a control point's blossom argument (at most
   /// three entries, no allocation)
@@ -199,10 +208,10 @@ public:
   /// how a dependent slot is computed: `value(target) = sum weights[i] * value(sources[i])`
   /// over the first `size` sources (the weights sum to one)
   struct Rule {
-    Slot target;
-    int size;
-    std::array<Slot, 3> sources;
-    std::array<FT, 3> weights;
+    Slot target;                 ///< the dependent slot computed by the rule
+    int size;                    ///< the number of sources used (2 or 3)
+    std::array<Slot, 3> sources; ///< the source slots; unused ones are `null_slot`
+    std::array<FT, 3> weights;   ///< the coefficients of the sources
   };
   /// @}
 
@@ -211,6 +220,7 @@ public:
 
   /*!
     builds the plan of the spline over `domain`; all control values start at zero.
+    \param domain the triangulated domain, copied into the spline
     \param frame which points of each corner region are prescribed
   */
   explicit C1_quintic_spline(Domain domain, Corner_frame frame = Corner_frame::Symmetric_stars)
@@ -227,8 +237,12 @@ public:
 
   /// \name Slots
   /// @{
+
+  /// returns the domain.
   const Domain& domain() const { return m_domain; }
+  /// returns the choice of prescribed points in the corner regions.
   Corner_frame corner_frame() const { return m_frame; }
+  /// returns the number of control-point slots, \f$V + 4E + 6F\f$.
   std::size_t number_of_slots() const { return m_values.size(); }
   /// the corner slot of vertex `v`
   Slot vertex_slot(Index v) const { return internal::quintic_vertex_slot(m_domain, v); }
@@ -294,9 +308,12 @@ public:
 
   /// \name Plan
   /// @{
+
+  /// returns `true` iff slot `s` is a free parameter (not computed by a rule).
   bool is_free(Slot s) const { return m_free[s] != 0; }
   /// returns the free slots in increasing order
   const std::vector<Slot>& free_slots() const { return m_free_slots; }
+  /// returns the number of free slots.
   std::size_t number_of_free_parameters() const { return m_free_slots.size(); }
   /// returns the rules in evaluation order
   const std::vector<Rule>& rules() const { return m_rules; }
@@ -308,7 +325,10 @@ public:
 
   /// \name Control values
   /// @{
+
+  /// returns the control value held by slot `s`.
   const Value& value(Slot s) const { return m_values[s]; }
+  /// returns the control values of all slots, indexed by slot.
   const std::vector<Value>& values() const { return m_values; }
 
   /// sets the free slot `s` without propagating (use `propagate()` after a batch).

@@ -56,10 +56,16 @@ class Domain_locator {
 public:
   /// \name Types
   /// @{
+
+  /// the kernel
   using Geom_traits = GeomTraits;
+  /// the number type
   using FT = typename Geom_traits::FT;
+  /// the point type of the domain plane
   using Point_2 = typename Geom_traits::Point_2;
+  /// the triangulated domain
   using Domain = Planar_domain<Geom_traits>;
+  /// index of a face of the domain
   using Index = typename Domain::Index;
 
   /// where a point lies: a triangle of the domain and the barycentric coordinates of the

@@ -35,9 +35,11 @@ struct Multi_index {
   /// returns a mutable reference to the multiplicity of domain vertex `v`.
   int& operator[](int v) { return v == 0 ? i : (v == 1 ? j : k); }
 
+  /// returns `true` iff `a` and `b` are equal.
   friend bool operator==(const Multi_index& a, const Multi_index& b) {
     return a.i == b.i && a.j == b.j && a.k == b.k;
   }
+  /// returns `true` iff `a` and `b` differ.
   friend bool operator!=(const Multi_index& a, const Multi_index& b) { return !(a == b); }
 };
 

@@ -52,8 +52,11 @@ namespace Triangular_spline {
 template <class GeomTraits>
 class Planar_domain {
 public:
+  /// the kernel
   using Geom_traits = GeomTraits;
+  /// the number type
   using FT = typename Geom_traits::FT;
+  /// the point type
   using Point_2 = typename Geom_traits::Point_2;
   /// index of a vertex, edge or face
   using Index = std::uint32_t;
@@ -73,14 +76,20 @@ public:
 
   /// \name Sizes
   /// @{
+
+  /// returns the number of vertices.
   std::size_t number_of_vertices() const { return m_points.size(); }
+  /// returns the number of faces.
   std::size_t number_of_faces() const { return m_faces.size(); }
+  /// returns the number of edges.
   std::size_t number_of_edges() const { return m_edges.size(); }
   /// returns the number of edges with two incident faces
   std::size_t number_of_interior_edges() const { return m_edges.size() - m_boundary_edges; }
+  /// returns the number of edges with one incident face
   std::size_t number_of_boundary_edges() const { return m_boundary_edges; }
   /// returns the number of vertices on the boundary
   std::size_t number_of_boundary_vertices() const { return m_boundary_vertices; }
+  /// returns the number of vertices not on the boundary
   std::size_t number_of_interior_vertices() const { return m_points.size() - m_boundary_vertices; }
   /// returns the number of connected components (through shared edges)
   std::size_t number_of_components() const { return m_components; }
@@ -98,10 +107,14 @@ public:
 
   /// \name Elements
   /// @{
+
+  /// returns the point of vertex `v`
   const Point_2& point(Index v) const { return m_points[v]; }
+  /// returns the points of all vertices, indexed by vertex
   const std::vector<Point_2>& points() const { return m_points; }
   /// returns the vertices of face `f`, counter-clockwise
   const std::array<Index, 3>& face(Index f) const { return m_faces[f]; }
+  /// returns the vertices of all faces (each counter-clockwise), indexed by face
   const std::vector<std::array<Index, 3>>& faces() const { return m_faces; }
   /// returns the two vertices of edge `e`, the smaller index first (the canonical
   /// orientation of the edge's control-point slots)
@@ -109,6 +122,7 @@ public:
   /// returns the faces on the left and on the right of edge `e` oriented from
   /// `edge(e)[0]` to `edge(e)[1]`; `null_index` where there is none
   const std::array<Index, 2>& edge_faces(Index e) const { return m_edge_faces[e]; }
+  /// returns `true` iff edge `e` has only one incident face
   bool is_boundary_edge(Index e) const {
     return m_edge_faces[e][0] == null_index || m_edge_faces[e][1] == null_index;
   }
@@ -121,6 +135,7 @@ public:
         return m_faces[f][static_cast<std::size_t>(i)];
     return null_index;
   }
+  /// returns `true` iff vertex `v` is on the boundary
   bool is_boundary_vertex(Index v) const { return m_vertex_boundary[v] != 0; }
   /// returns the neighbours of `v` in counter-clockwise order; for a boundary vertex the
   /// first and the last are on the boundary, and there is one more neighbour than faces
@@ -140,6 +155,7 @@ public:
     return {m_star_edges.data() + m_neighbour_offsets[v],
             m_star_edges.data() + m_neighbour_offsets[v + 1]};
   }
+  /// returns the kernel instance
   const Geom_traits& geom_traits() const { return m_traits; }
   /// @}
 

@@ -30,8 +30,11 @@ namespace Triangular_spline {
 template <class GeomTraits, class Value = typename GeomTraits::FT>
 class Polynomial_surface {
 public:
+  /// the kernel
   using Geom_traits = GeomTraits;
+  /// the number type
   using FT = typename Geom_traits::FT;
+  /// the point type of the plane
   using Point_2 = typename Geom_traits::Point_2;
 
   /// creates the zero polynomial of degree at most `degree`.

@@ -43,23 +43,35 @@ struct Value_traits {
   static Value from_coordinates(const std::array<FT, 1>& c) { return c[0]; }
 };
 
+/// the value traits of `CGAL::Vector_3` (parametric patches in space).
 template <class Vector>
 struct Value_traits<Vector, std::enable_if_t<std::is_same<
                                 typename Kernel_traits<Vector>::Kernel::Vector_3, Vector>::value>> {
+  /// the number type of the vector's kernel
   using FT = typename Kernel_traits<Vector>::Kernel::FT;
+  /// the number of coordinates
   static constexpr int dimension = 3;
+  /// returns the null vector
   static Vector zero() { return Vector(NULL_VECTOR); }
+  /// returns coordinate `c` (0, 1 or 2) of `v`
   static FT coordinate(const Vector& v, int c) { return v[c]; }
+  /// returns the vector with the given coordinates
   static Vector from_coordinates(const std::array<FT, 3>& c) { return Vector(c[0], c[1], c[2]); }
 };
 
+/// the value traits of `CGAL::Vector_2` (parametric patches in the plane).
 template <class Vector>
 struct Value_traits<Vector, std::enable_if_t<std::is_same<
                                 typename Kernel_traits<Vector>::Kernel::Vector_2, Vector>::value>> {
+  /// the number type of the vector's kernel
   using FT = typename Kernel_traits<Vector>::Kernel::FT;
+  /// the number of coordinates
   static constexpr int dimension = 2;
+  /// returns the null vector
   static Vector zero() { return Vector(NULL_VECTOR); }
+  /// returns coordinate `c` (0 or 1) of `v`
   static FT coordinate(const Vector& v, int c) { return v[c]; }
+  /// returns the vector with the given coordinates
   static Vector from_coordinates(const std::array<FT, 2>& c) { return Vector(c[0], c[1]); }
 };
 

@@ -38,12 +38,12 @@ struct Edge_certificate {
   `certify_C1()` (0 by default, so round-off shows as failure: read `max_residual`).
 */
 struct C1_certificate {
-  bool exact = false;      ///< decided with exact arithmetic
-  bool certified = false;  ///< every interior edge is C^1
-  double tolerance = 0;    ///< tolerance used (0 for exact)
-  double max_residual = 0; ///< largest residual over all edges
-  std::size_t interior_edges = 0;
-  std::size_t failed_edges = 0;
+  bool exact = false;                  ///< decided with exact arithmetic
+  bool certified = false;              ///< every interior edge is C^1
+  double tolerance = 0;                ///< tolerance used (0 for exact)
+  double max_residual = 0;             ///< largest residual over all edges
+  std::size_t interior_edges = 0;      ///< number of interior edges checked
+  std::size_t failed_edges = 0;        ///< number of interior edges that are not C^1
   double seconds = 0;                  ///< time taken
   std::vector<Edge_certificate> edges; ///< per interior edge, in edge order
 
@@ -112,6 +112,7 @@ private:
   proof; to certify a `double` spline exactly, convert its patches with `convert_patch()`
   (exact) and certify those.
 
+  \param domain the triangulated domain of the patches
   \param patch a callable `patch(f)` returning the `Bezier_triangle` of face `f`
   \param tolerance for inexact number types: residual accepted as zero
 */

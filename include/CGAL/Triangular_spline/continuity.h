@@ -71,6 +71,8 @@ struct Join_report {
   /// local indices (0, 1, 2) in patch A of \f$p, r, s\f$ and in patch B of \f$q, r, s\f$
   std::array<int, 3> a_vertices{{0, 1, 2}}, b_vertices{{0, 1, 2}};
   std::vector<Join_condition> conditions; ///< every condition checked, by increasing order
+  /// \var b_vertices
+  /// local indices (0, 1, 2) in patch B of \f$q, r, s\f$
 };
 
 namespace internal {
@@ -117,6 +119,8 @@ shared_edge(const Bezier_triangle<GeomTraits, Value>& A,
   residual is at most `tolerance` (absolute, largest coordinate), and the residuals say by
   how much the join misses.
 
+  \param A the first patch
+  \param B the second patch, of the same degree \f$m\f$ as `A`
   \param k the continuity order, \f$0 \le k \le m\f$
   \param conditions which equivalent set of conditions to evaluate
   \param tolerance absolute tolerance for inexact number types; ignored (0) for exact ones

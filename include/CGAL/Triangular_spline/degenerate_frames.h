@@ -125,6 +125,8 @@ struct Vertex_move {
   Index vertex;        ///< the vertex index (unchanged by the move)
   Point_2 from, to;    ///< old and new position
   double distance = 0; ///< Euclidean length of the move (in double)
+  /// \var from
+  /// the old position
 };
 
 /*!

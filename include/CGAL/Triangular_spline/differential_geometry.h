@@ -25,6 +25,14 @@ namespace Triangular_spline {
 struct Surface_derivatives {
   std::array<double, 3> fx, fy, fxx, fxy,
       fyy; ///< \f$\partial_x, \partial_y, \partial_{xx}, \partial_{xy}, \partial_{yy}\f$
+  /// \var fx
+  /// the first derivative \f$\partial_x\f$
+  /// \var fy
+  /// the first derivative \f$\partial_y\f$
+  /// \var fxx
+  /// the second derivative \f$\partial_{xx}\f$
+  /// \var fxy
+  /// the mixed second derivative \f$\partial_{xy}\f$
 };
 
 /*!

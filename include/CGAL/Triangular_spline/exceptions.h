@@ -22,6 +22,7 @@ namespace Triangular_spline {
 */
 class Invalid_input : public std::invalid_argument {
 public:
+  /// creates the exception with the message `what`.
   explicit Invalid_input(const std::string& what) : std::invalid_argument(what) {}
 };
 

@@ -250,8 +250,9 @@ public:
   using Vec2 = std::array<double, 2>;
   /// a point or vector of space
   using Vec3 = std::array<double, 3>;
-  /// the faces and vertices of the mesh
+  /// the face index type of the mesh
   using face_descriptor = typename Mesh::Face_index;
+  /// the vertex index type of the mesh
   using vertex_descriptor = typename Mesh::Vertex_index;
 
   /*!
@@ -302,9 +303,11 @@ public:
   /// opposite corner projects across the edge in a vertex frame): a sign of a mesh too
   /// sharp for its normals; the surface is still defined but may fold there.
   std::size_t number_of_folded_maps() const { return m_folded; }
-  /// returns the number of vertices, edges and faces.
+  /// returns the number of vertices.
   std::size_t number_of_vertices() const { return m_vertices.size(); }
+  /// returns the number of edges.
   std::size_t number_of_edges() const { return m_edges.size(); }
+  /// returns the number of faces.
   std::size_t number_of_faces() const { return m_faces.size(); }
   /// returns the number of corners (= sides) of face `f`.
   std::size_t face_size(std::size_t f) const { return m_faces.at(f).vertex.size(); }

@@ -129,12 +129,15 @@ public:
 
   /// \name Arithmetic
   /// @{
+
+  /// returns the negated jet.
   Taylor_jet operator-() const {
     Taylor_jet r(*this);
     for (int i = 0; i < size(m_order); ++i)
       r.m_c[static_cast<std::size_t>(i)] = -m_c[static_cast<std::size_t>(i)];
     return r;
   }
+  /// adds `b`; the order becomes the smaller of both orders.
   Taylor_jet& operator+=(const Taylor_jet& b) {
     m_order = (std::min)(m_order, b.m_order);
     for (int i = 0; i < size(m_order); ++i)
@@ -143,6 +146,7 @@ public:
     clear_above();
     return *this;
   }
+  /// subtracts `b`; the order becomes the smaller of both orders.
   Taylor_jet& operator-=(const Taylor_jet& b) {
     m_order = (std::min)(m_order, b.m_order);
     for (int i = 0; i < size(m_order); ++i)
@@ -151,11 +155,14 @@ public:
     clear_above();
     return *this;
   }
+  /// multiplies every coefficient by `s`.
   Taylor_jet& operator*=(const FT& s) {
     for (int i = 0; i < size(m_order); ++i)
       m_c[static_cast<std::size_t>(i)] = m_c[static_cast<std::size_t>(i)] * s;
     return *this;
   }
+  /// divides every coefficient by `s`.
+  /// \throws Invalid_input if `s` is zero
   Taylor_jet& operator/=(const FT& s) {
     if (s == FT(0))
       throw Invalid_input("Taylor_jet: division by zero");
@@ -163,30 +170,43 @@ public:
       m_c[static_cast<std::size_t>(i)] = m_c[static_cast<std::size_t>(i)] / s;
     return *this;
   }
+  /// multiplies by `b` (truncated Cauchy product).
   Taylor_jet& operator*=(const Taylor_jet& b) {
     *this = *this * b;
     return *this;
   }
+  /// divides by `b`.
+  /// \throws Invalid_input if the value of `b` is zero
   Taylor_jet& operator/=(const Taylor_jet& b) {
     *this = *this / b;
     return *this;
   }
 
+  /// returns the sum of two jets.
   friend Taylor_jet operator+(Taylor_jet a, const Taylor_jet& b) { return a += b; }
+  /// returns the difference of two jets.
   friend Taylor_jet operator-(Taylor_jet a, const Taylor_jet& b) { return a -= b; }
+  /// returns `a` with `s` added to its value.
   friend Taylor_jet operator+(Taylor_jet a, const FT& s) {
     a.m_c[0] = a.m_c[0] + s;
     return a;
   }
+  /// returns `a` with `s` added to its value.
   friend Taylor_jet operator+(const FT& s, Taylor_jet a) { return a + s; }
+  /// returns `a` with `s` subtracted from its value.
   friend Taylor_jet operator-(Taylor_jet a, const FT& s) {
     a.m_c[0] = a.m_c[0] - s;
     return a;
   }
+  /// returns the jet of `s` minus `a`.
   friend Taylor_jet operator-(const FT& s, const Taylor_jet& a) { return (-a) + s; }
+  /// returns `a` with every coefficient multiplied by `s`.
   friend Taylor_jet operator*(Taylor_jet a, const FT& s) { return a *= s; }
+  /// returns `a` with every coefficient multiplied by `s`.
   friend Taylor_jet operator*(const FT& s, Taylor_jet a) { return a *= s; }
+  /// returns `a` with every coefficient divided by `s`; throws `Invalid_input` if `s` is zero.
   friend Taylor_jet operator/(Taylor_jet a, const FT& s) { return a /= s; }
+  /// returns the jet of `s` divided by `a`; throws `Invalid_input` if the value of `a` is zero.
   friend Taylor_jet operator/(const FT& s, const Taylor_jet& a) { return Taylor_jet(s) / a; }
 
   /// the truncated Cauchy product.

@@ -439,11 +439,15 @@ std::vector<T> shepard_functions(const std::vector<T>& indicators, int order) {
   and `Taylor_jet`s; optionally `of_powers(w)` for indicators given as powers.
 */
 struct Fang_blending_functions {
+  /// returns the name of the policy, `"fang"`.
   static const char* name() { return "fang"; }
+  /// returns the blending functions of order `order` of `indicators` (`blending_functions()`).
   template <class T>
   std::vector<T> operator()(const std::vector<T>& indicators, int order) const {
     return blending_functions(indicators, order);
   }
+  /// returns the blending functions of indicators given as powers
+  /// (`blending_functions_of_powers()`).
   template <class T>
   std::vector<T> of_powers(const std::vector<T>& powers) const {
     return blending_functions_of_powers(powers);
@@ -456,7 +460,9 @@ struct Fang_blending_functions {
   schemes using it are undefined at points where two indicators vanish.
 */
 struct Extended_nielson_blending_functions {
+  /// returns the name of the policy, `"extended-nielson"`.
   static const char* name() { return "extended-nielson"; }
+  /// returns the extended Nielson functions of order `order` of `indicators`.
   template <class T>
   std::vector<T> operator()(const std::vector<T>& indicators, int order) const {
     return extended_nielson_functions(indicators, order);
@@ -468,7 +474,9 @@ struct Extended_nielson_blending_functions {
   \brief the blending-function policy of Shepard's functions (eq. 9.2).
 */
 struct Shepard_blending_functions {
+  /// returns the name of the policy, `"shepard"`.
   static const char* name() { return "shepard"; }
+  /// returns Shepard's functions of order `order` of `indicators`.
   template <class T>
   std::vector<T> operator()(const std::vector<T>& indicators, int order) const {
     return shepard_functions(indicators, order);
