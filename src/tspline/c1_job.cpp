@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -103,8 +104,16 @@ Json run(const C1_job& job, std::ostream& out) {
   Json timings = Json::object();
   Json report = Json::object();
 
+  // Reading and triangulating take about a second from some 10^5 points (a few MB of text).
+  std::error_code size_error;
+  const bool large_file = !job.input.empty() &&
+                          std::filesystem::file_size(job.input, size_error) > 4000000 &&
+                          !size_error;
+  progress("c1", "reading and triangulating " + job.input, large_file);
   Input<K> input = read_input<K>(job.input);
   timings.set("read_and_triangulate", clock.lap());
+  // About a second of work from here on: 10^5 triangles exact, 10^6 in double.
+  const bool large = input.domain.number_of_faces() > (job.exact ? 20000u : 300000u);
   const std::size_t input_vertices = input.domain.number_of_vertices();
 
   // Degenerate frames are re-routed by the plan; the perturbation fix moves vertices first.
@@ -121,10 +130,13 @@ Json run(const C1_job& job, std::ostream& out) {
                       : job.fit == "tangent"   ? TS::Fit::Tangent_planes
                       : job.fit == "lsq"       ? TS::Fit::Least_squares
                                                : TS::Fit::Approximate;
+  progress("c1", "building the plan of " + std::to_string(domain.number_of_faces()) + " patches",
+           large);
   Spline spline(std::move(domain), fit == TS::Fit::Approximate
                                        ? TS::Corner_frame::Symmetric_stars
                                        : TS::Corner_frame::Corner_and_two_stars);
   timings.set("plan", clock.lap());
+  progress("c1", "fitting and propagating", large);
   TS::fit_vertex_data(spline, input.values, fit);
   timings.set("fit_and_propagate", clock.lap());
 
@@ -135,12 +147,17 @@ Json run(const C1_job& job, std::ostream& out) {
   double scale = 1;
   for (const auto& v : spline.values())
     scale = (std::max)(scale, TS::max_abs_coordinate(v));
+  progress("c1",
+           std::string(job.exact ? "certifying exactly " : "checking ") +
+               std::to_string(d.number_of_interior_edges()) + " interior edges",
+           large);
   const TS::C1_certificate certificate = TS::certify_C1(d, patch, 1e-10 * scale);
   timings.set("certify", clock.lap());
 
   std::optional<long long> morgan_scott = TS::morgan_scott_dimension(d);
   std::optional<std::size_t> rank_dimension;
   if (job.dimension) {
+    progress("c1", "computing the exact rank of the C^1 conditions", large);
     rank_dimension = TS::exact_spline_dimension(d);
     timings.set("dimension_exact", clock.lap());
   }
@@ -187,6 +204,7 @@ Json run(const C1_job& job, std::ostream& out) {
   report.set("failed_edges", certificate.failed_edges);
 
   if (!job.mesh.empty()) {
+    progress("c1", "tessellating and writing " + job.mesh, large || job.levels >= 5);
     report.set("mesh", write_tessellated_mesh(d, patch, job.levels, job.mesh));
     timings.set("tessellate_and_write", clock.lap());
   }

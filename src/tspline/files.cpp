@@ -1,7 +1,11 @@
 #include "files.h"
 
 #include <cctype>
+#include <cstdio>
+#include <iostream>
 #include <stdexcept>
+
+#include <unistd.h>
 
 namespace tspline {
 
@@ -21,6 +25,12 @@ std::string lowercase_extension(const std::string& path) {
   for (char& c : ext)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
+}
+
+void progress(const std::string& command, const std::string& stage, bool large) {
+  static const bool terminal = isatty(fileno(stderr)) != 0;
+  if (terminal && large)
+    std::cerr << "tspline " << command << ": " << stage << "..." << std::endl;
 }
 
 std::ifstream open_input(const std::string& path) {

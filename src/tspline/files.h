@@ -23,6 +23,10 @@ private:
 // lowercase; empty if there is none.
 std::string lowercase_extension(const std::string& path);
 
+// Writes "tspline <command>: <stage>..." on stderr when stderr is a terminal and the work is
+// large enough to take about a second; silent otherwise (logs and pipes stay clean).
+void progress(const std::string& command, const std::string& stage, bool large);
+
 // Open a file or throw std::runtime_error("cannot open 'path'" / "cannot write 'path'").
 std::ifstream open_input(const std::string& path);
 std::ofstream open_output(const std::string& path);
