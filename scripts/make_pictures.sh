@@ -29,7 +29,14 @@ done
 "$tspline" render --input "$work/demo.spline" --out "$fig/tour_curvature_top.png" \
   --mode curvature --view 0,90 --size 600x450 --range 4 >/dev/null
 
-for picture in "$fig"/tour_*.png; do
+# One figure for each of Mann's and Fang's sections of the manual.
+"$tspline" mann --input data/franke_100.xyz --mesh "$work/mann.ply" >/dev/null
+"$tspline" render --input "$work/mann.ply" --out "$fig/mann_franke.png" --size 480x360 >/dev/null
+"$tspline" blend --shape ellipsoid --order 2 --variant open --mesh "$work/ellipsoid.ply" >/dev/null
+"$tspline" render --input "$work/ellipsoid.ply" --out "$fig/fang_ellipsoid_curvature.png" \
+  --mode curvature --size 480x360 >/dev/null
+
+for picture in "$fig"/*.png; do
   bytes=$(stat -c %s "$picture")
   echo "$picture: $bytes bytes"
   if ((bytes > max_bytes)); then
