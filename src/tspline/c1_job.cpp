@@ -344,19 +344,9 @@ Json run_c1_job(const C1_job& job, std::ostream& out) {
 }
 
 Certify_result run_certify_job(const std::string& path, double tolerance, std::ostream& out) {
-  // The header says the dimension: peek at it, then read the whole file exactly.
+  // The header says the dimension, which picks the value type; then read exactly.
   std::ifstream in = open_input(path);
-  std::string line;
-  int dimension = 1;
-  while (std::getline(in, line)) {
-    const auto tokens = TS::internal::tokens_of_line(line);
-    if (tokens.size() == 2 && tokens[0] == "dimension") {
-      dimension = tokens[1] == "3" ? 3 : 1;
-      break;
-    }
-  }
-  in.clear();
-  in.seekg(0);
+  const int dimension = TS::spline_file_dimension(in);
   return dimension == 3 ? certify_file<Exact, Exact::Vector_3>(in, path, tolerance, out)
                         : certify_file<Exact, Exact::FT>(in, path, tolerance, out);
 }

@@ -298,19 +298,9 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
 } // namespace
 
 Job_result run_adjust_job(const Adjust_job& job, std::ostream& out) {
-  // The header says the dimension: peek at it, then read the whole file exactly.
+  // The header says the dimension, which picks the value type; then read exactly.
   std::ifstream in = open_input(job.input);
-  std::string line;
-  int dimension = 1;
-  while (std::getline(in, line)) {
-    const auto tokens = TS::internal::tokens_of_line(line);
-    if (tokens.size() == 2 && tokens[0] == "dimension") {
-      dimension = tokens[1] == "3" ? 3 : 1;
-      break;
-    }
-  }
-  in.clear();
-  in.seekg(0);
+  const int dimension = TS::spline_file_dimension(in);
   return dimension == 3 ? adjust_file<Exact::Vector_3>(in, job, out)
                         : adjust_file<Exact::FT>(in, job, out);
 }

@@ -400,6 +400,28 @@ Spline_file<GeomTraits, Value> read_spline_file(std::istream& input, const std::
   }
 }
 
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief returns the `dimension` declared in the header of a spline file (1 or 3), so that a
+  caller can choose the `Value` type of `read_spline_file()`; 1 when the header declares
+  none (`read_spline_file()` then reports the missing line). The stream is rewound.
+*/
+inline int spline_file_dimension(std::istream& input) {
+  std::string line;
+  int dimension = 1;
+  while (std::getline(input, line)) {
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::string key, value;
+    if (words >> key >> value && key == "dimension") {
+      dimension = value == "3" ? 3 : 1;
+      break;
+    }
+  }
+  input.clear();
+  input.seekg(0);
+  return dimension;
+}
+
 } // namespace Triangular_spline
 } // namespace CGAL
 
