@@ -82,11 +82,13 @@ BENCHMARK(BM_evaluate)
     ->ArgsProduct({{0, 1}, {0, 1, 2}, {0, 1, 2}, {0, 1}})
     ->Unit(benchmark::kMicrosecond);
 
-// args: mesh (0 franke8, 1 torus), tessellate (0/1); open variant, d = 2, resolution 8
+// args: mesh (0 franke8, 1 torus), tessellate (0/1), vertex surfaces (0 least, 2 normals);
+// open variant, d = 2, resolution 8
 void BM_build_and_tessellate(benchmark::State& state) {
   const std::string name = state.range(0) == 0 ? "franke8" : "torus";
   const Mesh& mesh = test_mesh(name);
   TS::Mesh_blending_options options;
+  options.vertex_surface = static_cast<TS::Vertex_surface_method>(state.range(2));
   std::size_t triangles = 0;
   for (auto _ : state) {
     const Surface surface(mesh, options);
@@ -98,11 +100,15 @@ void BM_build_and_tessellate(benchmark::State& state) {
       benchmark::DoNotOptimize(surface.number_of_faces());
     }
   }
-  state.SetLabel(name + (state.range(1) == 1 ? " build+tessellate (resolution 8, " +
-                                                   std::to_string(triangles) + " triangles)"
-                                             : " build"));
+  state.SetLabel(name +
+                 (state.range(1) == 1 ? " build+tessellate (resolution 8, " +
+                                            std::to_string(triangles) + " triangles)"
+                                      : " build") +
+                 (state.range(2) == 0 ? ", least vertex surfaces" : ", normals vertex surfaces"));
 }
-BENCHMARK(BM_build_and_tessellate)->ArgsProduct({{0, 1}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_build_and_tessellate)
+    ->ArgsProduct({{0, 1}, {0, 1}, {0, 2}})
+    ->Unit(benchmark::kMillisecond);
 
 } // namespace
 

@@ -35,6 +35,15 @@ done
 "$tspline" blend --shape ellipsoid --order 2 --variant open --mesh "$work/ellipsoid.ply" >/dev/null
 "$tspline" render --input "$work/ellipsoid.ply" --out "$fig/fang_ellipsoid_curvature.png" \
   --mode curvature --size 480x360 >/dev/null
+# Where the curvature comes from (manual): the same ellipsoid with the colours saturating at
+# |K| = 0.3 (the true minimum is 0.25), with the thesis' vertex surfaces and with ours that
+# fit the neighbours' normals.
+for method in least normals; do
+  "$tspline" blend --shape ellipsoid --vertex-surface $method --resolution 16 \
+    --mesh "$work/ellipsoid_$method.ply" >/dev/null
+  "$tspline" render --input "$work/ellipsoid_$method.ply" --mode curvature --range 0.3 \
+    --view -35,20 --size 360x270 --out "$fig/fang_ellipsoid_low_$method.png" >/dev/null
+done
 
 for picture in "$fig"/*.png; do
   bytes=$(stat -c %s "$picture")

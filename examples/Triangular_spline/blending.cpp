@@ -9,6 +9,7 @@
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
 #include <CGAL/Triangular_spline/Blending/blending_continuity.h>
 #include <CGAL/Triangular_spline/Blending/blending_functions.h>
+#include <CGAL/Triangular_spline/Blending/blending_parameters.h>
 #include <CGAL/Triangular_spline/Blending/test_meshes.h>
 
 #include <cstdlib>
@@ -19,6 +20,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point_3 = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point_3>;
 namespace TS = CGAL::Triangular_spline;
+namespace TSP = CGAL::Triangular_spline::parameters;
 
 int main(int argc, char* argv[]) {
   // 1. The blending functions themselves (Def. 3.4): three indicators, order d = 2. On a
@@ -38,11 +40,12 @@ int main(int argc, char* argv[]) {
   }
 
   // 3. The surface: blending order 2 (curvature continuous), open-set variant (§6.2),
-  //    de Boor-Ron least vertex surfaces.
-  TS::Mesh_blending_options options;
-  options.order = 2;
-  options.variant = TS::Blending_variant::OPEN_SET;
-  const TS::Mesh_blending_surface<Point_3> surface(mesh, options);
+  //    de Boor-Ron least vertex surfaces, as named parameters (ours are free functions that
+  //    append to a pack: CGAL 5.5's list of member functions is closed).
+  const TS::Mesh_blending_surface<Point_3> surface = TS::make_blending_surface(
+      mesh, TSP::blending_order(2, TSP::blending_variant(TS::Blending_variant::OPEN_SET,
+                                                         TSP::vertex_surface_method(
+                                                             TS::Vertex_surface_method::LEAST))));
 
   // Evaluate face 0 at barycentric parameters (1/3, 1/3, 1/3), with its curvature.
   const Point_3 p = surface.evaluate(*mesh.faces().begin(), 1.0 / 3, 1.0 / 3);

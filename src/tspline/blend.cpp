@@ -37,9 +37,13 @@ int run_blend(const std::vector<std::string>& args) {
                     "continuity, 6.2)",
                     "open");
   parser.add_option("vertex-surface", "M",
-                    "least (de Boor-Ron least interpolant) or lsq (least-squares polynomial)",
+                    "least (de Boor-Ron least interpolant, as the thesis), lsq (least-squares "
+                    "polynomial through the vertex) or normals (through the vertex and its "
+                    "neighbours, fitting their normals: more accurate on coarse meshes)",
                     "least");
   parser.add_option("lsq-degree", "n", "degree of the lsq vertex surfaces", "2");
+  parser.add_option("normals-degree", "n",
+                    "least degree of the normals vertex surfaces (raised for high valence)", "4");
   parser.add_option("resolution", "N", "tessellation and curvature grid: segments per edge", "8");
   parser.add_option("samples", "S", "measured points per edge", "3");
   parser.add_option("mesh", "OUT",
@@ -66,12 +70,17 @@ int run_blend(const std::vector<std::string>& args) {
   if (job.variant != "basic" && job.variant != "vertex" && job.variant != "open")
     throw Usage_error("--variant must be basic, vertex or open");
   job.vertex_surface = parsed.value("vertex-surface");
-  if (job.vertex_surface != "least" && job.vertex_surface != "lsq")
-    throw Usage_error("--vertex-surface must be least or lsq");
+  if (job.vertex_surface != "least" && job.vertex_surface != "lsq" &&
+      job.vertex_surface != "normals")
+    throw Usage_error("--vertex-surface must be least, lsq or normals");
   const long long degree = parsed.integer("lsq-degree");
   if (degree < 1 || degree > 8)
     throw Usage_error("--lsq-degree must be between 1 and 8");
   job.least_squares_degree = static_cast<int>(degree);
+  const long long normals_degree = parsed.integer("normals-degree");
+  if (normals_degree < 2 || normals_degree > 8)
+    throw Usage_error("--normals-degree must be between 2 and 8");
+  job.normals_degree = static_cast<int>(normals_degree);
   const long long resolution = parsed.integer("resolution");
   if (resolution < 1 || resolution > 256)
     throw Usage_error("--resolution must be between 1 and 256");

@@ -188,8 +188,11 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
                     : job.variant == "vertex" ? TS::Blending_variant::VERTEX_CONTINUITY
                                               : TS::Blending_variant::OPEN_SET;
   options.vertex_surface = job.vertex_surface == "lsq" ? TS::Vertex_surface_method::LEAST_SQUARES
-                                                       : TS::Vertex_surface_method::LEAST;
+                           : job.vertex_surface == "normals"
+                               ? TS::Vertex_surface_method::LEAST_SQUARES_NORMALS
+                               : TS::Vertex_surface_method::LEAST;
   options.least_squares_degree = job.least_squares_degree;
+  options.normals_degree = job.normals_degree;
   std::unique_ptr<TS::Mesh_blending_surface<Point_3>> built;
   try {
     built = std::make_unique<TS::Mesh_blending_surface<Point_3>>(mesh, options);
@@ -215,9 +218,13 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
   report.set("shape", job.shape.empty() ? Json() : Json(job.shape));
   report.set("order", job.order);
   report.set("variant", job.variant);
-  report.set("vertex_surface", job.vertex_surface == "lsq" ? "least_squares" : "least");
+  report.set("vertex_surface", job.vertex_surface == "lsq"       ? "least_squares"
+                               : job.vertex_surface == "normals" ? "least_squares_normals"
+                                                                 : "least");
   if (job.vertex_surface == "lsq")
     report.set("least_squares_degree", job.least_squares_degree);
+  if (job.vertex_surface == "normals")
+    report.set("normals_degree", job.normals_degree);
   report.set("vertices", surface.number_of_vertices());
   report.set("edges", surface.number_of_edges());
   report.set("border_edges", border_edges);
@@ -282,7 +289,9 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
       << "\n  vertex surfaces: "
       << (job.vertex_surface == "lsq"
               ? "least squares, degree " + std::to_string(job.least_squares_degree)
-              : std::string("de Boor-Ron least interpolant"))
+          : job.vertex_surface == "normals" ? "through the neighbours, normals fitted, degree >= " +
+                                                  std::to_string(job.normals_degree)
+                                            : std::string("de Boor-Ron least interpolant"))
       << "\n";
   if (surface.number_of_folded_maps() > 0)
     out << "  warning: " << surface.number_of_folded_maps()

@@ -17,8 +17,9 @@ struct Blend_job {
   unsigned seed = 1;                    // for the random test meshes
   int order = 2;                        // the blending order d >= 0
   std::string variant = "open";         // basic | vertex | open
-  std::string vertex_surface = "least"; // least (de Boor-Ron) | lsq
+  std::string vertex_surface = "least"; // least (de Boor-Ron) | lsq | normals
   int least_squares_degree = 2;         // degree of the lsq vertex surfaces
+  int normals_degree = 4;               // least degree of the normals vertex surfaces
   int resolution = 8;                   // segments per input edge of the tessellation
   int samples = 3;                      // measured points per edge
   std::string mesh;                     // tessellated surface (.ply/.off/.obj); empty: none

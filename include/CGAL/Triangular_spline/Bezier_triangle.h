@@ -367,7 +367,8 @@ public:
   */
   std::array<Bezier_triangle, 4> subdivide() const {
     const Point_2 &r = m_vertices[0], &s = m_vertices[1], &t = m_vertices[2];
-    const Point_2 a = CGAL::midpoint(s, t), b = CGAL::midpoint(t, r), c = CGAL::midpoint(r, s);
+    const auto midpoint = m_traits.construct_midpoint_2_object();
+    const Point_2 a = midpoint(s, t), b = midpoint(t, r), c = midpoint(r, s);
     return {{reexpress(r, c, b), reexpress(c, s, a), reexpress(b, a, t), reexpress(a, b, c)}};
   }
 

@@ -77,7 +77,16 @@ enum class Vertex_surface_method {
   /// the polynomial of degree `Mesh_blending_options::least_squares_degree` through the
   /// vertex with its normal, fitting the neighbours in the least-squares sense
   /// (`least_squares_polynomial()`)
-  LEAST_SQUARES
+  LEAST_SQUARES,
+  /// the polynomial of degree at most `Mesh_blending_options::normals_degree` through the
+  /// vertex with its normal and through its neighbours,
+  /// fitting the neighbours' normals in the least-squares sense (minimum-norm when they do
+  /// not determine all coefficients). The degree is raised while the positions cannot be
+  /// interpolated (high valence). Not in the thesis, whose
+  /// §9 suggests interpolating more data: with the normals the vertex surfaces of coarse
+  /// meshes are far more accurate, and the blend amplifies their disagreement less (see
+  /// the user manual, "Where the curvature comes from").
+  LEAST_SQUARES_NORMALS
 };
 
 /*!
@@ -89,6 +98,7 @@ struct Mesh_blending_options {
   Blending_variant variant = Blending_variant::OPEN_SET; ///< the reparameterization
   Vertex_surface_method vertex_surface = Vertex_surface_method::LEAST; ///< the vertex surfaces
   int least_squares_degree = 2;   ///< degree of the `LEAST_SQUARES` vertex surfaces (>= 1)
+  int normals_degree = 4;         ///< degree of the `LEAST_SQUARES_NORMALS` vertex surfaces (>= 2)
   double least_tolerance = 1e-10; ///< rank threshold of `least_interpolant()`
 };
 
@@ -278,6 +288,10 @@ public:
     if (options.vertex_surface == Vertex_surface_method::LEAST_SQUARES &&
         options.least_squares_degree < 1)
       throw Invalid_input("blending: the least-squares degree must be at least 1");
+    if (options.vertex_surface == Vertex_surface_method::LEAST_SQUARES_NORMALS &&
+        options.normals_degree < 2)
+      throw Invalid_input("blending: the degree of the vertex surfaces with normals must be at "
+                          "least 2");
     m_mesh.collect_garbage();
     check_mesh();
     compute_normals();
@@ -319,6 +333,31 @@ public:
   const Vec3& vertex_position(std::size_t v) const { return m_vertices.at(v).position; }
   /// returns the height polynomial \f$P\f$ of the vertex surface of `v` in its frame.
   const Bivariate_polynomial& vertex_height(std::size_t v) const { return m_vertices.at(v).height; }
+  /*!
+    replaces the height polynomial of the vertex surface of `v` (in its frame, see
+    `to_vertex_frame()`): user guidance, or a surface known better than from the 1-ring (Fang
+    §9 lists both as future work). The surface still interpolates the vertex with its normal,
+    so \f$P(0,0)\f$ and the gradient at the origin must be zero; the neighbours need not be
+    interpolated. Only evaluation uses the vertex surfaces: no other state is rebuilt.
+
+    \throws Invalid_input if `v` is out of range or \f$P(0,0)\f$, \f$P_x(0,0)\f$,
+    \f$P_y(0,0)\f$ is not zero or a coefficient is not finite
+  */
+  void set_vertex_height(std::size_t v, const Bivariate_polynomial& height) {
+    if (v >= m_vertices.size())
+      throw Invalid_input("blending: no vertex " + std::to_string(v));
+    for (int h = 0; h <= height.degree(); ++h)
+      for (int k = 0; h + k <= height.degree(); ++k)
+        if (!std::isfinite(height.coefficient(h, k)))
+          throw Invalid_input("blending: the height of vertex " + std::to_string(v) +
+                              " has a coefficient that is not finite");
+    if (height.coefficient(0, 0) != 0 || height.coefficient(1, 0) != 0 ||
+        height.coefficient(0, 1) != 0)
+      throw Invalid_input("blending: the height of vertex " + std::to_string(v) +
+                          " must vanish with its gradient at the origin (interpolating the "
+                          "vertex and its normal)");
+    m_vertices[v].height = height;
+  }
   /// returns the unit length \f$L\f$ of the frame of vertex `v`.
   double vertex_scale(std::size_t v) const { return m_vertices.at(v).scale; }
   /// returns the head and tail vertices of edge `e`.
@@ -925,26 +964,54 @@ private:
       if (!found)
         throw Invalid_input("blending: all neighbours of " + vertex_name(v) +
                             " project onto its normal line");
-      // conditions in the frame: P(0) = 0, grad P(0) = 0, P(x_i, y_i) = z_i
-      std::vector<Interpolation_condition> at_vertex, neighbours;
+      // conditions in the frame: P(0) = 0, grad P(0) = 0, P(x_i, y_i) = z_i, and for
+      // LEAST_SQUARES_NORMALS grad P(x_i, y_i) = -(n_x, n_y) / n_z from the neighbour's normal
+      std::vector<Interpolation_condition> at_vertex, neighbours, slopes;
       at_vertex.push_back({Interpolation_condition::VALUE, {{0, 0}}, 0});
       at_vertex.push_back({Interpolation_condition::DX, {{0, 0}}, 0});
       at_vertex.push_back({Interpolation_condition::DY, {{0, 0}}, 0});
       for (std::size_t w : V.neighbours) {
         const Vec3 d = internal::sub3(m_vertices[w].position, V.position);
+        const std::array<double, 2> at{
+            {internal::dot3(d, V.ex) / V.scale, internal::dot3(d, V.ey) / V.scale}};
         neighbours.push_back(
-            {Interpolation_condition::VALUE,
-             {{internal::dot3(d, V.ex) / V.scale, internal::dot3(d, V.ey) / V.scale}},
-             internal::dot3(d, V.normal) / V.scale});
+            {Interpolation_condition::VALUE, at, internal::dot3(d, V.normal) / V.scale});
+        const Vec3& n = m_vertices[w].normal;
+        const double nz = internal::dot3(n, V.normal);
+        // beyond about 75 degrees from V's normal the slope (> 3.9, infinite at 90) would
+        // dominate the fit: such a normal is left out
+        if (nz > 0.25) {
+          slopes.push_back({Interpolation_condition::DX, at, -internal::dot3(n, V.ex) / nz});
+          slopes.push_back({Interpolation_condition::DY, at, -internal::dot3(n, V.ey) / nz});
+        }
       }
       try {
         if (m_options.vertex_surface == Vertex_surface_method::LEAST) {
           std::vector<Interpolation_condition> all = at_vertex;
           all.insert(all.end(), neighbours.begin(), neighbours.end());
           V.height = least_interpolant(all, m_options.least_tolerance);
-        } else {
+        } else if (m_options.vertex_surface == Vertex_surface_method::LEAST_SQUARES) {
           V.height =
               least_squares_polynomial(at_vertex, neighbours, m_options.least_squares_degree);
+        } else {
+          std::vector<Interpolation_condition> exact = at_vertex;
+          exact.insert(exact.end(), neighbours.begin(), neighbours.end());
+          // as many coefficients as positions at least (high valence); when the slopes leave
+          // some free (valence 3), the minimum-norm fit: on the cube and the dodecahedron it
+          // bends less than lowering the degree to a determined fit
+          int degree = m_options.normals_degree;
+          while ((degree + 1) * (degree + 2) / 2 < static_cast<int>(exact.size()))
+            ++degree;
+          // neighbours on a curve of the degree: raise it
+          for (int tries = 0;; ++tries, ++degree) {
+            try {
+              V.height = least_squares_polynomial(exact, slopes, degree);
+              break;
+            } catch (const Invalid_input&) {
+              if (tries == 4)
+                throw;
+            }
+          }
         }
       } catch (const Invalid_input& e) {
         throw Invalid_input("blending: vertex surface of " + vertex_name(v) + ": " + e.what());

@@ -1,0 +1,238 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_BLENDING_BLENDING_PARAMETERS_H
+#define CGAL_TRIANGULAR_SPLINE_BLENDING_BLENDING_PARAMETERS_H
+
+#include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/property_map.h>
+
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+namespace internal_np {
+
+// CGAL 5.5's list of parameter names is closed: our own tags live here, looked up with
+// CGAL::parameters::get_parameter() like CGAL's.
+enum blending_order_t { blending_order };
+enum blending_variant_t { blending_variant };
+enum vertex_surface_method_t { vertex_surface_method };
+enum least_squares_degree_t { least_squares_degree };
+enum normals_degree_t { normals_degree };
+enum least_interpolant_tolerance_t { least_interpolant_tolerance };
+
+} // namespace internal_np
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief the named parameters of the generalized blending (`make_blending_surface()`,
+  `blending_options()`).
+
+  Each option of `Mesh_blending_options` has a free function here (`blending_order(int)`,
+  `blending_variant(Blending_variant)`, `vertex_surface_method(Vertex_surface_method)`,
+  `least_squares_degree(int)`, `normals_degree(int)`, `least_interpolant_tolerance(double)`;
+  see `blending_options()` for their meaning and defaults), in two forms: `f(value)`
+  starts a pack, `f(value, np)` appends to the pack `np` (CGAL's or ours). CGAL's member
+  functions (`.vertex_normal_map(...)`, ...) work on any pack, ours do not exist as members
+  (CGAL 5.5's list is closed), hence:
+  \code
+  namespace TSP = CGAL::Triangular_spline::parameters;
+  TSP::blending_order(1, TSP::blending_variant(Blending_variant::BASIC));
+  TSP::blending_order(1, CGAL::parameters::vertex_normal_map(normals));
+  TSP::blending_order(1).vertex_normal_map(normals);
+  \endcode
+  The namespace also makes all of `CGAL::parameters` visible, so
+  `CGAL::Triangular_spline::parameters::default_values()` and
+  `CGAL::Triangular_spline::parameters::vertex_normal_map()` are CGAL's.
+*/
+namespace parameters {
+
+// so that `parameters::default_values()` (and any CGAL parameter) still resolves inside
+// CGAL::Triangular_spline, where this namespace hides CGAL::parameters
+using namespace CGAL::parameters;
+
+// Both forms of a parameter of ours: `NAME(value)` starts a pack, `NAME(value, np)` appends to
+// `np` (as CGAL's own macro does for its members).
+#define CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(NAME, TYPE)                                         \
+  inline Named_function_parameters<TYPE, internal_np::NAME##_t> NAME(TYPE value) {                 \
+    return Named_function_parameters<TYPE, internal_np::NAME##_t>(value);                          \
+  }                                                                                                \
+  template <class T, class Tag, class Base>                                                        \
+  Named_function_parameters<TYPE, internal_np::NAME##_t, Named_function_parameters<T, Tag, Base>>  \
+  NAME(TYPE value, const Named_function_parameters<T, Tag, Base>& np) {                            \
+    return Named_function_parameters<TYPE, internal_np::NAME##_t,                                  \
+                                     Named_function_parameters<T, Tag, Base>>(value, np);          \
+  }
+
+#ifndef DOXYGEN_RUNNING // documented in the namespace and in blending_options()
+CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(blending_order, int)
+CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(blending_variant, Blending_variant)
+CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(vertex_surface_method, Vertex_surface_method)
+CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(least_squares_degree, int)
+CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(normals_degree, int)
+CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(least_interpolant_tolerance, double)
+#endif
+#undef CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER
+
+} // namespace parameters
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief returns the `Mesh_blending_options` set by the named parameters `np`, the defaults
+  of `Mesh_blending_options` for those not given. Parameters that are not options (such as
+  `vertex_normal_map`) are ignored.
+
+  The values are not checked here: `Mesh_blending_surface` rejects invalid ones.
+
+  \tparam NamedParameters a sequence of named parameters
+
+  \param np an optional sequence of named parameters among the ones listed below
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{blending_order}
+      \cgalParamDescription{the blending order \f$d\f$: the surface is \f$C^d\f$}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`2`}
+      \cgalParamExtra{must be non-negative}
+    \cgalParamNEnd
+    \cgalParamNBegin{blending_variant}
+      \cgalParamDescription{the edge-to-face reparameterization}
+      \cgalParamType{`Blending_variant`}
+      \cgalParamDefault{`Blending_variant::OPEN_SET`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_surface_method}
+      \cgalParamDescription{how the vertex surfaces are built}
+      \cgalParamType{`Vertex_surface_method`}
+      \cgalParamDefault{`Vertex_surface_method::LEAST`}
+    \cgalParamNEnd
+    \cgalParamNBegin{least_squares_degree}
+      \cgalParamDescription{the degree of the `LEAST_SQUARES` vertex surfaces}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`2`}
+      \cgalParamExtra{must be at least 1 if used}
+    \cgalParamNEnd
+    \cgalParamNBegin{normals_degree}
+      \cgalParamDescription{the degree of the `LEAST_SQUARES_NORMALS` vertex surfaces (raised
+      for high valence)}
+      \cgalParamType{`int`}
+      \cgalParamDefault{`4`}
+      \cgalParamExtra{must be at least 2 if used}
+    \cgalParamNEnd
+    \cgalParamNBegin{least_interpolant_tolerance}
+      \cgalParamDescription{the relative rank threshold of `least_interpolant()`}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`1e-10`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+*/
+template <class CGAL_NP_TEMPLATE_PARAMETERS>
+Mesh_blending_options blending_options(const CGAL_NP_CLASS& np = parameters::default_values()) {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Mesh_blending_options options;
+  options.order = choose_parameter(get_parameter(np, internal_np::blending_order), options.order);
+  options.variant =
+      choose_parameter(get_parameter(np, internal_np::blending_variant), options.variant);
+  options.vertex_surface = choose_parameter(get_parameter(np, internal_np::vertex_surface_method),
+                                            options.vertex_surface);
+  options.least_squares_degree = choose_parameter(
+      get_parameter(np, internal_np::least_squares_degree), options.least_squares_degree);
+  options.normals_degree =
+      choose_parameter(get_parameter(np, internal_np::normals_degree), options.normals_degree);
+  options.least_tolerance = choose_parameter(
+      get_parameter(np, internal_np::least_interpolant_tolerance), options.least_tolerance);
+  return options;
+}
+
+/*!
+  \ingroup PkgTriangularSplineBlending
+  \brief builds the `Mesh_blending_surface` of `mesh` with the options and the vertex
+  normals and positions given as named parameters.
+
+  Without `vertex_normal_map` and `vertex_point_map` this is
+  `Mesh_blending_surface<Point_3>(mesh, blending_options(np))`. With either, the
+  surface is built from a copy of `mesh` whose points, or whose `"v:normal"` property
+  (created or overwritten), hold the values of the maps; the normals are then checked and
+  normalised by `Mesh_blending_surface` as if they were the mesh's own.
+
+  \tparam Point_3 the point type of the mesh, of any CGAL kernel `K`
+  \tparam NamedParameters a sequence of named parameters
+
+  \param mesh the input polygon mesh
+  \param np an optional sequence of named parameters: those of `blending_options()` and the
+  ones listed below
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{a property map associating a normal to each vertex of `mesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with key type
+                     `Surface_mesh<Point_3>::Vertex_index` and value type `K::Vector_3`}
+      \cgalParamDefault{the property `"v:normal"` of `mesh` if it has one, otherwise normals
+                        estimated from the faces (see `Mesh_blending_surface`)}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{a property map associating a position to each vertex of `mesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with key type
+                     `Surface_mesh<Point_3>::Vertex_index` and value type `Point_3`}
+      \cgalParamDefault{the points of `mesh`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \throws Invalid_input as the constructor of `Mesh_blending_surface` (invalid options or
+  mesh, bad normals)
+*/
+template <class Point_3, class CGAL_NP_TEMPLATE_PARAMETERS>
+Mesh_blending_surface<Point_3>
+make_blending_surface(const Surface_mesh<Point_3>& mesh,
+                      const CGAL_NP_CLASS& np = parameters::default_values()) {
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  using Surface = Mesh_blending_surface<Point_3>;
+  using Mesh = typename Surface::Mesh;
+  using vertex_descriptor = typename Surface::vertex_descriptor;
+  using Vector_3 = typename Surface::Vector_3;
+  constexpr bool has_normals =
+      !is_default_parameter<CGAL_NP_CLASS, CGAL::internal_np::vertex_normal_map_t>::value;
+  constexpr bool has_points =
+      !is_default_parameter<CGAL_NP_CLASS, CGAL::internal_np::vertex_point_t>::value;
+  const Mesh_blending_options options = blending_options(np);
+  if constexpr (!has_normals && !has_points) {
+    return Surface(mesh, options);
+  } else {
+    // The surface reads positions and normals from its mesh only: give it a copy holding ours
+    // (the copy keeps the vertex indices, so maps keyed on `mesh` apply to it).
+    Mesh copy(mesh);
+    if constexpr (has_points) {
+      const auto points = get_parameter(np, CGAL::internal_np::vertex_point);
+      static_assert(
+          std::is_same<std::decay_t<decltype(get(points, std::declval<vertex_descriptor>()))>,
+                       Point_3>::value,
+          "vertex_point_map: the value type must be the mesh's Point_3");
+      for (vertex_descriptor v : copy.vertices())
+        copy.point(v) = get(points, v);
+    }
+    if constexpr (has_normals) {
+      const auto given = get_parameter(np, CGAL::internal_np::vertex_normal_map);
+      // exact types: Vector_3 converts implicitly from segments, rays, ...
+      static_assert(
+          std::is_same<std::decay_t<decltype(get(given, std::declval<vertex_descriptor>()))>,
+                       Vector_3>::value,
+          "vertex_normal_map: the value type must be the kernel's Vector_3");
+      auto normals = copy.template add_property_map<vertex_descriptor, Vector_3>("v:normal").first;
+      for (vertex_descriptor v : copy.vertices())
+        put(normals, v, get(given, v));
+    }
+    return Surface(copy, options);
+  }
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_BLENDING_BLENDING_PARAMETERS_H

@@ -1,0 +1,412 @@
+// Tests of the named parameters of the generalized blending (blending_parameters.h): each
+// parameter reaches its option, the vertex normal and point maps replace the mesh's own, and
+// our parameters combine with CGAL's in both orders.
+#include "test_support.h"
+
+#include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
+#include <CGAL/Triangular_spline/Blending/blending_parameters.h>
+#include <CGAL/Triangular_spline/Blending/test_meshes.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using namespace ts_test;
+namespace TSP = CGAL::Triangular_spline::parameters;
+using Point_3 = Epick::Point_3;
+using Vector_3 = Epick::Vector_3;
+using Mesh = CGAL::Surface_mesh<Point_3>;
+using Vertex = Mesh::Vertex_index;
+using Blending_surface = TS::Mesh_blending_surface<Point_3>;
+
+// Wrong-typed values do not compile (an enum class does not convert to int, nor an int to
+// an enum class).
+template <class A, class = void>
+struct Accepts_order : std::false_type {};
+template <class A>
+struct Accepts_order<A, std::void_t<decltype(TSP::blending_order(std::declval<A>()))>>
+    : std::true_type {};
+template <class A, class = void>
+struct Accepts_variant : std::false_type {};
+template <class A>
+struct Accepts_variant<A, std::void_t<decltype(TSP::blending_variant(std::declval<A>()))>>
+    : std::true_type {};
+static_assert(Accepts_order<int>::value, "");
+static_assert(!Accepts_order<TS::Blending_variant>::value, "");
+static_assert(!Accepts_order<const char*>::value, "");
+static_assert(Accepts_variant<TS::Blending_variant>::value, "");
+static_assert(!Accepts_variant<int>::value, "");
+static_assert(!Accepts_variant<TS::Vertex_surface_method>::value, "");
+
+// Parameters spread over the faces and their interiors (barycentric (a, b) of triangles).
+std::vector<std::pair<std::size_t, std::array<double, 2>>>
+sample_points(const Blending_surface& s) {
+  const std::vector<std::array<double, 2>> ab{
+      {{1.0 / 3, 1.0 / 3}}, {{0.2, 0.7}}, {{0.05, 0.1}}, {{0.6, 0.3}}, {{0.45, 0.05}}};
+  std::vector<std::pair<std::size_t, std::array<double, 2>>> points;
+  const std::size_t F = s.number_of_faces();
+  for (std::size_t f : {std::size_t(0), F / 3, F / 2, F - 1})
+    for (const auto& p : ab)
+      points.push_back({f, p});
+  return points;
+}
+
+// The largest coordinate difference between two surfaces (of the same mesh) at the samples.
+double max_difference(const Blending_surface& s, const Blending_surface& t) {
+  double d = 0;
+  for (const auto& [f, p] : sample_points(s)) {
+    const std::array<double, 3> a = s.face_surface(f, p[0], p[1]);
+    const std::array<double, 3> b = t.face_surface(f, p[0], p[1]);
+    for (std::size_t c = 0; c < 3; ++c)
+      d = (std::max)(d, std::fabs(a[c] - b[c]));
+  }
+  return d;
+}
+
+// The largest coordinate difference between the vertex surfaces of two surfaces (of the same
+// mesh) around their vertices: all of them, where sampling faces could miss a change.
+double max_vertex_surface_difference(const Blending_surface& s, const Blending_surface& t) {
+  double d = 0;
+  for (std::size_t v = 0; v < s.number_of_vertices(); ++v)
+    for (const std::array<double, 2>& xy : {std::array<double, 2>{{0.3, 0.2}}, {{-0.4, 0.5}}}) {
+      const std::array<double, 3> a = s.vertex_surface(v, xy[0], xy[1]);
+      const std::array<double, 3> b = t.vertex_surface(v, xy[0], xy[1]);
+      for (std::size_t c = 0; c < 3; ++c)
+        d = (std::max)(d, std::fabs(a[c] - b[c]));
+    }
+  return d;
+}
+
+::testing::AssertionResult bitwise_equal(const Blending_surface& s, const Blending_surface& t) {
+  for (const auto& [f, p] : sample_points(s))
+    if (s.face_surface(f, p[0], p[1]) != t.face_surface(f, p[0], p[1]))
+      return ::testing::AssertionFailure()
+             << "face " << f << " differs at (" << p[0] << ", " << p[1] << ")";
+  return ::testing::AssertionSuccess();
+}
+
+::testing::AssertionResult same_options(const TS::Mesh_blending_options& a,
+                                        const TS::Mesh_blending_options& b) {
+  if (a.order == b.order && a.variant == b.variant && a.vertex_surface == b.vertex_surface &&
+      a.least_squares_degree == b.least_squares_degree && a.normals_degree == b.normals_degree &&
+      a.least_tolerance == b.least_tolerance)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << "options differ: order " << a.order << " / " << b.order << ", variant "
+         << TS::to_string(a.variant) << " / " << TS::to_string(b.variant)
+         << ", least-squares degree " << a.least_squares_degree << " / " << b.least_squares_degree
+         << ", normals degree " << a.normals_degree << " / " << b.normals_degree << ", tolerance "
+         << a.least_tolerance << " / " << b.least_tolerance;
+}
+
+std::array<double, 3> unit(const Vector_3& n) {
+  const double length = std::sqrt(n.squared_length());
+  return {{n.x() / length, n.y() / length, n.z() / length}};
+}
+
+// n rotated by `angle` about the fixed unit `axis` (Rodrigues), then scaled: a set of normals
+// close to the mesh's (so they still agree with the face orientation) but not equal to them.
+Vector_3 rotated(const Vector_3& n, const Vector_3& axis, double angle, double scale) {
+  const Vector_3 r = n * std::cos(angle) + CGAL::cross_product(axis, n) * std::sin(angle) +
+                     axis * ((axis * n) * (1 - std::cos(angle)));
+  return r * scale;
+}
+
+Vector_3 generic_axis() {
+  const Vector_3 a(1, 2, 3);
+  return a / std::sqrt(a.squared_length());
+}
+
+TEST(BlendingParameters, DefaultPackGivesDefaultOptions) {
+  const Mesh mesh = TS::blending_test_mesh<Point_3>("ellipsoid");
+  const Blending_surface reference(mesh);
+  EXPECT_TRUE(same_options(TS::blending_options(), TS::Mesh_blending_options{}));
+  EXPECT_TRUE(same_options(TS::blending_options(CGAL::parameters::default_values()),
+                           TS::Mesh_blending_options{}));
+  // CGAL's parameters are not options
+  EXPECT_TRUE(same_options(TS::blending_options(CGAL::parameters::vertex_normal_map(
+                               mesh.property_map<Vertex, Vector_3>("v:normal").first)),
+                           TS::Mesh_blending_options{}));
+
+  const Blending_surface plain = TS::make_blending_surface(mesh);
+  const Blending_surface with_defaults =
+      TS::make_blending_surface(mesh, CGAL::parameters::default_values());
+  const Blending_surface ours_defaults = TS::make_blending_surface(mesh, TSP::default_values());
+  for (const Blending_surface* s : {&plain, &with_defaults, &ours_defaults}) {
+    EXPECT_TRUE(same_options(s->options(), TS::Mesh_blending_options{}));
+    EXPECT_FALSE(s->has_estimated_normals());
+    EXPECT_TRUE(bitwise_equal(*s, reference));
+  }
+}
+
+TEST(BlendingParameters, EachParameterSetsItsOption) {
+  const Mesh mesh = TS::blending_test_mesh<Point_3>("ellipsoid");
+  const Blending_surface reference(mesh);
+  // a real change of the surface, far above round-off
+  const double changed = 1e-6;
+
+  TS::Mesh_blending_options expected;
+  expected.order = 1;
+  const Blending_surface order1 = TS::make_blending_surface(mesh, TSP::blending_order(1));
+  EXPECT_TRUE(same_options(order1.options(), expected));
+  EXPECT_EQ(order1.order(), 1);
+  EXPECT_GT(max_difference(order1, reference), changed);
+  // an explicit default changes nothing
+  EXPECT_TRUE(bitwise_equal(TS::make_blending_surface(mesh, TSP::blending_order(2)), reference));
+
+  expected = {};
+  expected.variant = TS::Blending_variant::BASIC;
+  const Blending_surface basic =
+      TS::make_blending_surface(mesh, TSP::blending_variant(TS::Blending_variant::BASIC));
+  EXPECT_TRUE(same_options(basic.options(), expected));
+  EXPECT_EQ(basic.variant(), TS::Blending_variant::BASIC);
+  EXPECT_GT(max_difference(basic, reference), changed);
+
+  expected = {};
+  expected.vertex_surface = TS::Vertex_surface_method::LEAST_SQUARES;
+  const Blending_surface squares = TS::make_blending_surface(
+      mesh, TSP::vertex_surface_method(TS::Vertex_surface_method::LEAST_SQUARES));
+  EXPECT_TRUE(same_options(squares.options(), expected));
+  EXPECT_GT(max_difference(squares, reference), changed);
+
+  // the degree only matters for least-squares vertex surfaces
+  expected.least_squares_degree = 3;
+  const Blending_surface cubic = TS::make_blending_surface(
+      mesh, TSP::least_squares_degree(
+                3, TSP::vertex_surface_method(TS::Vertex_surface_method::LEAST_SQUARES)));
+  EXPECT_TRUE(same_options(cubic.options(), expected));
+  EXPECT_GT(max_difference(cubic, squares), changed);
+  expected = {};
+  expected.least_squares_degree = 3;
+  EXPECT_TRUE(same_options(TS::make_blending_surface(mesh, TSP::least_squares_degree(3)).options(),
+                           expected));
+
+  // the degree of the normals-fitting vertex surfaces
+  expected = {};
+  expected.vertex_surface = TS::Vertex_surface_method::LEAST_SQUARES_NORMALS;
+  const Blending_surface normals4 = TS::make_blending_surface(
+      mesh, TSP::vertex_surface_method(TS::Vertex_surface_method::LEAST_SQUARES_NORMALS));
+  EXPECT_TRUE(same_options(normals4.options(), expected));
+  expected.normals_degree = 5;
+  const Blending_surface normals5 = TS::make_blending_surface(
+      mesh, TSP::normals_degree(
+                5, TSP::vertex_surface_method(TS::Vertex_surface_method::LEAST_SQUARES_NORMALS)));
+  EXPECT_TRUE(same_options(normals5.options(), expected));
+  EXPECT_GT(max_difference(normals5, normals4), changed);
+
+  // a coarse rank threshold: nearly dependent degree blocks of the least interpolant drop
+  // out at some vertices (few: hence all vertex surfaces are compared)
+  expected = {};
+  expected.least_tolerance = 0.1;
+  const Blending_surface coarse =
+      TS::make_blending_surface(mesh, TSP::least_interpolant_tolerance(0.1));
+  EXPECT_TRUE(same_options(coarse.options(), expected));
+  EXPECT_GT(max_vertex_surface_difference(coarse, reference), changed);
+  EXPECT_EQ(
+      max_vertex_surface_difference(
+          TS::make_blending_surface(mesh, TSP::least_interpolant_tolerance(1e-10)), reference),
+      0);
+
+  // all at once, in a chain of ours
+  expected.order = 3;
+  expected.variant = TS::Blending_variant::VERTEX_CONTINUITY;
+  expected.vertex_surface = TS::Vertex_surface_method::LEAST_SQUARES;
+  expected.least_squares_degree = 4;
+  expected.least_tolerance = 1e-6;
+  const auto all = TSP::blending_order(
+      3, TSP::blending_variant(
+             TS::Blending_variant::VERTEX_CONTINUITY,
+             TSP::vertex_surface_method(
+                 TS::Vertex_surface_method::LEAST_SQUARES,
+                 TSP::least_squares_degree(4, TSP::least_interpolant_tolerance(1e-6)))));
+  EXPECT_TRUE(same_options(TS::blending_options(all), expected));
+  EXPECT_TRUE(same_options(TS::make_blending_surface(mesh, all).options(), expected));
+  // a parameter given twice: the last one appended wins, as for CGAL's
+  EXPECT_EQ(TS::blending_options(TSP::blending_order(1, TSP::blending_order(4))).order, 1);
+}
+
+// Normals passed as a std::map-backed map or as another property of the mesh replace
+// "v:normal"; they are normalised like the mesh's own.
+TEST(BlendingParameters, VertexNormalMapOverridesTheProperty) {
+  const Mesh mesh = TS::blending_test_mesh<Point_3>("ellipsoid");
+  const auto own = mesh.property_map<Vertex, Vector_3>("v:normal");
+  ASSERT_TRUE(own.second);
+  const Blending_surface reference(mesh);
+
+  std::map<Vertex, Vector_3> table;
+  Mesh with_property = mesh;
+  auto property = with_property.add_property_map<Vertex, Vector_3>("v:tilted").first;
+  for (Vertex v : mesh.vertices()) {
+    table[v] = rotated(own.first[v], generic_axis(), 0.1, 2.5);
+    property[v] = table[v];
+  }
+  const Blending_surface from_table = TS::make_blending_surface(
+      mesh, CGAL::parameters::vertex_normal_map(boost::make_assoc_property_map(table)));
+  // the property map is keyed on the same vertex indices as `mesh`
+  const Blending_surface from_property =
+      TS::make_blending_surface(mesh, CGAL::parameters::vertex_normal_map(property));
+
+  for (const Blending_surface* s : {&from_table, &from_property}) {
+    EXPECT_FALSE(s->has_estimated_normals());
+    double largest_change = 0;
+    for (Vertex v : mesh.vertices()) {
+      const std::array<double, 3> given = unit(table[v]), original = unit(own.first[v]);
+      const std::array<double, 3>& used = s->vertex_normal(static_cast<std::size_t>(v));
+      double change = 0;
+      for (std::size_t c = 0; c < 3; ++c) {
+        // normalising the same vector: equal up to a few ulps
+        EXPECT_NEAR(used[c], given[c], 4e-16) << "vertex " << v;
+        change = (std::max)(change, std::fabs(used[c] - original[c]));
+      }
+      // a rotation by 0.1 about an axis no normal is parallel to moves every normal
+      EXPECT_GT(change, 1e-3) << "vertex " << v;
+      largest_change = (std::max)(largest_change, change);
+    }
+    EXPECT_GT(largest_change, 0.05);
+    EXPECT_GT(max_difference(*s, reference), 1e-6);
+  }
+  EXPECT_TRUE(bitwise_equal(from_table, from_property));
+  // the input mesh is untouched
+  EXPECT_TRUE(bitwise_equal(TS::make_blending_surface(mesh), reference));
+
+  // a mesh without normals gets them from the map instead of estimating them
+  const Mesh perturbed = TS::blending_test_mesh<Point_3>("perturbed");
+  ASSERT_FALSE((perturbed.property_map<Vertex, Vector_3>("v:normal").second));
+  std::map<Vertex, Vector_3> radial;
+  for (Vertex v : perturbed.vertices())
+    radial[v] = perturbed.point(v) - CGAL::ORIGIN;
+  const Blending_surface estimated = TS::make_blending_surface(perturbed);
+  const Blending_surface given = TS::make_blending_surface(
+      perturbed, CGAL::parameters::vertex_normal_map(boost::make_assoc_property_map(radial)));
+  EXPECT_TRUE(estimated.has_estimated_normals());
+  EXPECT_FALSE(given.has_estimated_normals());
+  for (Vertex v : perturbed.vertices())
+    for (std::size_t c = 0; c < 3; ++c)
+      EXPECT_NEAR(given.vertex_normal(static_cast<std::size_t>(v))[c], unit(radial[v])[c], 4e-16);
+}
+
+// Moved points give the surface moved by the same vector.
+TEST(BlendingParameters, VertexPointMapTranslatesTheSurface) {
+  const Vector_3 t(0.75, -1.5, 2.25);
+  for (const char* name : {"ellipsoid", "perturbed"}) { // given and estimated normals
+    const Mesh mesh = TS::blending_test_mesh<Point_3>(name);
+    std::map<Vertex, Point_3> moved;
+    for (Vertex v : mesh.vertices())
+      moved[v] = mesh.point(v) + t;
+    const Blending_surface reference(mesh);
+    const Blending_surface translated = TS::make_blending_surface(
+        mesh, CGAL::parameters::vertex_point_map(boost::make_assoc_property_map(moved)));
+    EXPECT_EQ(translated.has_estimated_normals(), reference.has_estimated_normals()) << name;
+    for (Vertex v : mesh.vertices()) {
+      const std::array<double, 3>& p = translated.vertex_position(static_cast<std::size_t>(v));
+      EXPECT_EQ(Point_3(p[0], p[1], p[2]), moved[v]) << name;
+    }
+    // The construction is translation invariant only in exact arithmetic: frames, heights
+    // and estimated normals come from coordinate differences, which round differently once
+    // the coordinates are shifted (their ulps grow with |t|). Observed: ~2e-15 here; 1e-12
+    // relative to the extent of the data leaves room for other compilers and libms.
+    const double scale = 4 + std::sqrt(t.squared_length());
+    double largest = 0;
+    for (const auto& [f, ab] : sample_points(reference)) {
+      const std::array<double, 3> p = reference.face_surface(f, ab[0], ab[1]);
+      const std::array<double, 3> q = translated.face_surface(f, ab[0], ab[1]);
+      for (std::size_t c = 0; c < 3; ++c)
+        largest = (std::max)(largest, std::fabs(q[c] - (p[c] + t[static_cast<int>(c)])));
+    }
+    EXPECT_LE(largest, 1e-12 * scale) << name;
+  }
+}
+
+TEST(BlendingParameters, InvalidValuesThrow) {
+  const Mesh mesh = TS::blending_test_mesh<Point_3>("icosahedron");
+  EXPECT_THROW(TS::make_blending_surface(mesh, TSP::blending_order(-1)), TS::Invalid_input);
+  EXPECT_THROW(
+      TS::make_blending_surface(
+          mesh, TSP::least_squares_degree(
+                    0, TSP::vertex_surface_method(TS::Vertex_surface_method::LEAST_SQUARES))),
+      TS::Invalid_input);
+  // also through the copy that holds given normals
+  EXPECT_THROW(TS::make_blending_surface(
+                   mesh, TSP::blending_order(
+                             -1, CGAL::parameters::vertex_normal_map(
+                                     mesh.property_map<Vertex, Vector_3>("v:normal").first))),
+               TS::Invalid_input);
+  // a zero normal given through the map is the constructor's error too
+  std::map<Vertex, Vector_3> zero;
+  for (Vertex v : mesh.vertices())
+    zero[v] = Vector_3(0, 0, 0);
+  EXPECT_THROW(TS::make_blending_surface(
+                   mesh, CGAL::parameters::vertex_normal_map(boost::make_assoc_property_map(zero))),
+               TS::Invalid_input);
+}
+
+// Ours appended to CGAL's, CGAL's member functions on ours, and CGAL's through our
+// namespace: all give the same surface.
+TEST(BlendingParameters, CombinesWithCgalParameters) {
+  const Mesh mesh = TS::blending_test_mesh<Point_3>("ellipsoid");
+  const auto own = mesh.property_map<Vertex, Vector_3>("v:normal").first;
+  std::map<Vertex, Vector_3> table;
+  std::map<Vertex, Point_3> points;
+  for (Vertex v : mesh.vertices()) {
+    table[v] = rotated(own[v], generic_axis(), 0.05, 1);
+    points[v] = mesh.point(v) + Vector_3(0, 0, 1);
+  }
+  const auto normals = boost::make_assoc_property_map(table);
+  const auto moved = boost::make_assoc_property_map(points);
+
+  const Blending_surface cgal_inside = TS::make_blending_surface(
+      mesh, TSP::blending_order(1, CGAL::parameters::vertex_normal_map(normals)));
+  const Blending_surface cgal_outside =
+      TS::make_blending_surface(mesh, TSP::blending_order(1).vertex_normal_map(normals));
+  const Blending_surface through_ours =
+      TS::make_blending_surface(mesh, TSP::vertex_normal_map(normals).vertex_point_map(moved));
+  TS::Mesh_blending_options expected;
+  expected.order = 1;
+  for (const Blending_surface* s : {&cgal_inside, &cgal_outside}) {
+    EXPECT_TRUE(same_options(s->options(), expected));
+    for (Vertex v : mesh.vertices())
+      for (std::size_t c = 0; c < 3; ++c)
+        EXPECT_NEAR(s->vertex_normal(static_cast<std::size_t>(v))[c], unit(table[v])[c], 4e-16);
+  }
+  EXPECT_TRUE(bitwise_equal(cgal_inside, cgal_outside));
+  EXPECT_TRUE(same_options(through_ours.options(), TS::Mesh_blending_options{}));
+
+  // several of each, interleaved, in both orders
+  const Blending_surface mixed_a = TS::make_blending_surface(
+      mesh,
+      TSP::blending_variant(TS::Blending_variant::BASIC,
+                            TSP::blending_order(1, CGAL::parameters::vertex_normal_map(normals)))
+          .vertex_point_map(moved));
+  const Blending_surface mixed_b = TS::make_blending_surface(
+      mesh,
+      TSP::blending_order(1, CGAL::parameters::vertex_point_map(moved).vertex_normal_map(normals))
+          .vertex_normal_map(normals)); // duplicates are harmless
+  const Blending_surface mixed_c = TS::make_blending_surface(
+      mesh, TSP::blending_variant(TS::Blending_variant::BASIC, TSP::blending_order(1))
+                .vertex_point_map(moved)
+                .vertex_normal_map(normals));
+  expected.variant = TS::Blending_variant::BASIC;
+  EXPECT_TRUE(same_options(mixed_a.options(), expected));
+  EXPECT_TRUE(same_options(mixed_c.options(), expected));
+  EXPECT_TRUE(bitwise_equal(mixed_a, mixed_c));
+  for (const Blending_surface* s : {&mixed_a, &mixed_b, &mixed_c, &through_ours})
+    for (Vertex v : mesh.vertices()) {
+      const std::array<double, 3>& p = s->vertex_position(static_cast<std::size_t>(v));
+      EXPECT_EQ(Point_3(p[0], p[1], p[2]), points[v]);
+      EXPECT_NEAR(s->vertex_normal(static_cast<std::size_t>(v))[0], unit(table[v])[0], 4e-16);
+    }
+  EXPECT_EQ(mixed_b.order(), 1);
+  EXPECT_EQ(mixed_b.variant(), TS::Blending_variant::OPEN_SET);
+}
+
+} // namespace
