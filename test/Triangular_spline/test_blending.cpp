@@ -686,9 +686,9 @@ std::vector<Continuity_case> continuity_cases() {
 INSTANTIATE_TEST_SUITE_P(Ch8, Mesh_continuity, ::testing::ValuesIn(continuity_cases()), case_name);
 
 // Fang ch. 8: convex inputs give no negative Gaussian curvature (the dodecahedron for every
-// order and variant; the ellipsoid for d <= 1 — for d >= 2 see
-// EllipsoidNegativeLobesComeFromVertexSurfaces); the basic variant has curvature "gaps" towards the
-// vertices of the sharp meshes that the improved ones do not.
+// order and variant; the ellipsoid for d <= 1, for d >= 2 see
+// EllipsoidNegativeLobesComeFromVertexSurfaces); the basic variant has curvature "gaps"
+// towards the vertices of the sharp meshes that the improved ones do not.
 TEST(MeshCurvature, ConvexInputsAndVertexGaps) {
   const Mesh dodecahedron = TS::blending_test_mesh<Point_3>("dodecahedron");
   const Mesh ellipsoid = TS::blending_test_mesh<Point_3>("ellipsoid");
@@ -800,8 +800,8 @@ double use_true_ellipsoid_heights(Blending_surface& s, const Mesh& mesh) {
 // Fang §8.2 reports no negative Gaussian curvature on the ellipsoid (d = 2). With the
 // thesis' vertex surfaces (de Boor-Ron's least interpolant of the 1-ring) we measure small
 // negative lobes for d >= 2. They come from the vertex surfaces, not from the blend: with
-// near-exact vertex surfaces the curvature stays within 5% of the ellipsoid's [1/4, 4] for
-// every order, and so it does with the normals-fitting vertex surfaces, or the least
+// near-exact vertex surfaces K stays in [0.2, 4.6] (the ellipsoid's is [1/4, 4]) for every
+// order; it stays positive with the normals-fitting vertex surfaces, and with the least
 // interpolant on the once more refined mesh.
 TEST(MeshCurvature, EllipsoidNegativeLobesComeFromVertexSurfaces) {
   const Mesh coarse = sampled_ellipsoid(1);

@@ -78,14 +78,14 @@ enum class Vertex_surface_method {
   /// vertex with its normal, fitting the neighbours in the least-squares sense
   /// (`least_squares_polynomial()`)
   LEAST_SQUARES,
-  /// the polynomial of degree at most `Mesh_blending_options::normals_degree` through the
-  /// vertex with its normal and through its neighbours,
-  /// fitting the neighbours' normals in the least-squares sense (minimum-norm when they do
-  /// not determine all coefficients). The degree is raised while the positions cannot be
-  /// interpolated (high valence). Not in the thesis, whose
-  /// §9 suggests interpolating more data: with the normals the vertex surfaces of coarse
-  /// meshes are far more accurate, and the blend amplifies their disagreement less (see
-  /// the user manual, "Where the curvature comes from").
+  /// the polynomial of degree `Mesh_blending_options::normals_degree` through the vertex
+  /// with its normal and through its neighbours, fitting the neighbours' normals in the
+  /// least-squares sense (minimum-norm when they do not determine all coefficients); the
+  /// degree is raised while the positions cannot be interpolated (high valence, or
+  /// neighbours on a curve of the degree). Not in the thesis, whose §9 suggests
+  /// interpolating more data: on coarse meshes these vertex surfaces are far more accurate,
+  /// and the blend amplifies their disagreement less (user manual, "Where the Curvature
+  /// Comes From").
   LEAST_SQUARES_NORMALS
 };
 
