@@ -37,10 +37,7 @@ int run_adjust(const std::vector<std::string>& args) {
     throw Usage_error("missing --order K");
   Adjust_job job;
   job.input = parsed.value("input");
-  const long long order = parsed.integer("order");
-  if (order < 0 || order > 20)
-    throw Usage_error("--order must be between 0 and 20, not " + std::to_string(order));
-  job.order = static_cast<int>(order);
+  job.order = parsed.integer_in("order", 0, 20);
   if (parsed.has("output"))
     job.output = parsed.value("output");
   if (parsed.has("report"))
@@ -80,15 +77,8 @@ int run_mann(const std::vector<std::string>& args) {
     throw Usage_error("missing --input FILE");
   Mann_job job;
   job.input = parsed.value("input");
-  const long long degree = parsed.integer("degree");
-  if (degree < 5 || degree > 13)
-    throw Usage_error("--degree must be between 5 and 13 (C^1 needs degree 4k+1 = 5), not " +
-                      std::to_string(degree));
-  job.degree = static_cast<int>(degree);
-  const long long levels = parsed.integer("levels");
-  if (levels < 0 || levels > 8)
-    throw Usage_error("--levels must be between 0 and 8");
-  job.levels = static_cast<int>(levels);
+  job.degree = parsed.integer_in("degree", 5, 13, " (C^1 needs degree 4k+1 = 5)");
+  job.levels = parsed.integer_in("levels", 0, 8);
   job.exact = parsed.is_set("exact");
   for (const auto& [name, field] : {std::pair<const char*, std::string*>{"report", &job.report},
                                     {"mesh", &job.mesh},

@@ -62,10 +62,7 @@ int run_blend(const std::vector<std::string>& args) {
     job.input = parsed.value("input");
   if (parsed.has("shape"))
     job.shape = parsed.value("shape");
-  const long long order = parsed.integer("order");
-  if (order < 0 || order > 20)
-    throw Usage_error("--order must be between 0 and 20 (the blending order d >= 0)");
-  job.order = static_cast<int>(order);
+  job.order = parsed.integer_in("order", 0, 20, " (the blending order d >= 0)");
   job.variant = parsed.value("variant");
   if (job.variant != "basic" && job.variant != "vertex" && job.variant != "open")
     throw Usage_error("--variant must be basic, vertex or open");
@@ -73,22 +70,10 @@ int run_blend(const std::vector<std::string>& args) {
   if (job.vertex_surface != "least" && job.vertex_surface != "lsq" &&
       job.vertex_surface != "normals")
     throw Usage_error("--vertex-surface must be least, lsq or normals");
-  const long long degree = parsed.integer("lsq-degree");
-  if (degree < 1 || degree > 8)
-    throw Usage_error("--lsq-degree must be between 1 and 8");
-  job.least_squares_degree = static_cast<int>(degree);
-  const long long normals_degree = parsed.integer("normals-degree");
-  if (normals_degree < 2 || normals_degree > 8)
-    throw Usage_error("--normals-degree must be between 2 and 8");
-  job.normals_degree = static_cast<int>(normals_degree);
-  const long long resolution = parsed.integer("resolution");
-  if (resolution < 1 || resolution > 256)
-    throw Usage_error("--resolution must be between 1 and 256");
-  job.resolution = static_cast<int>(resolution);
-  const long long samples = parsed.integer("samples");
-  if (samples < 1 || samples > 100)
-    throw Usage_error("--samples must be between 1 and 100");
-  job.samples = static_cast<int>(samples);
+  job.least_squares_degree = parsed.integer_in("lsq-degree", 1, 8);
+  job.normals_degree = parsed.integer_in("normals-degree", 2, 8);
+  job.resolution = parsed.integer_in("resolution", 1, 256);
+  job.samples = parsed.integer_in("samples", 1, 100);
   const long long seed = parsed.integer("seed");
   if (seed < 0 || seed > 4294967295LL)
     throw Usage_error("--seed must be a non-negative 32-bit integer");

@@ -46,6 +46,15 @@ long long Parsed_arguments::integer(const std::string& name) const {
   return result;
 }
 
+int Parsed_arguments::integer_in(const std::string& name, int low, int high,
+                                 const std::string& note) const {
+  const long long result = integer(name);
+  if (result < low || result > high)
+    throw Usage_error("--" + name + " must be between " + std::to_string(low) + " and " +
+                      std::to_string(high) + note + ", not " + std::to_string(result));
+  return static_cast<int>(result);
+}
+
 // ---------------------------------------------------------------------------
 // Argument_parser
 

@@ -37,6 +37,9 @@ public:
   // naming the option if the text is not one.
   double number(const std::string& name) const;
   long long integer(const std::string& name) const;
+  // The integer value, which must lie in [low, high]; otherwise `Usage_error`
+  // "--NAME must be between LOW and HIGH<note>, not VALUE".
+  int integer_in(const std::string& name, int low, int high, const std::string& note = "") const;
 
   // The boolean switch was given.
   bool is_set(const std::string& name) const { return switches_.count(name) != 0; }

@@ -116,16 +116,9 @@ int run_render(const std::vector<std::string>& args) {
   job.options.azimuth = view[0];
   job.options.elevation = view[1];
   parse_size(parsed.value("size"), job.options.width, job.options.height);
-  if (parsed.has("levels")) {
-    const long long levels = parsed.integer("levels");
-    if (levels < 0 || levels > 8)
-      throw Usage_error("--levels must be between 0 and 8");
-    job.levels = static_cast<int>(levels);
-  }
-  const long long bands = parsed.integer("bands");
-  if (bands < 1 || bands > 1000)
-    throw Usage_error("--bands must be between 1 and 1000");
-  job.options.bands = static_cast<int>(bands);
+  if (parsed.has("levels"))
+    job.levels = parsed.integer_in("levels", 0, 8);
+  job.options.bands = parsed.integer_in("bands", 1, 1000);
   if (parsed.has("range")) {
     const double range = parsed.number("range");
     if (!(range > 0))
@@ -138,10 +131,7 @@ int run_render(const std::vector<std::string>& args) {
       throw Usage_error("--light must not be the zero vector");
     job.options.light = render::Vector{l[0], l[1], l[2]};
   }
-  const long long samples = parsed.integer("samples");
-  if (samples < 1 || samples > 4)
-    throw Usage_error("--samples must be between 1 and 4");
-  job.options.supersampling = static_cast<int>(samples);
+  job.options.supersampling = parsed.integer_in("samples", 1, 4);
   job.options.perspective = parsed.is_set("perspective");
   job.options.legend = !parsed.is_set("no-legend");
   if (parsed.has("ply"))
