@@ -23,10 +23,22 @@ int run_c1(const std::vector<std::string>& args) {
                   "the height; holes and non-convex boundaries of a mesh are kept.");
   parser.add_option("input", "FILE", "scattered points (.xyz) or triangle mesh");
   parser.add_option("fit", "MODE",
-                    "approximate (polar blend of vertex data), interpolate (corners through the "
-                    "data), tangent (interpolate values and estimated gradients), lsq "
-                    "(interpolate; all control points closest to the tangent planes)",
-                    "approximate");
+                    "local (interpolate; every prescribed point from the local polynomial of its "
+                    "nearest vertex, a weighted least-squares fit of degree up to --degree: "
+                    "reproduces polynomials of that degree where the data determine them), lsq "
+                    "(interpolate; all control points closest to the local "
+                    "polynomials, global solve), tangent (interpolate values and estimated "
+                    "gradients), interpolate (corners through the data, polar blend elsewhere), "
+                    "approximate (Xu's polar blend of the vertex data)",
+                    "local");
+  parser.add_option("degree", "D",
+                    "largest degree of the local polynomial fits of --fit local and lsq (0..5; "
+                    "lowered where the neighbourhood does not determine it)",
+                    "5");
+  parser.add_option("degree-selection", "RULE",
+                    "how each vertex's degree is chosen: cv (leave-one-out cross-validation, "
+                    "the lowest degree predicting nearly as well as the best) or largest",
+                    "cv");
   parser.add_option("fix", "FIX",
                     "degenerate frames: reroute (local re-routing) or perturb "
                     "(move vertices slightly)",
@@ -53,6 +65,8 @@ int run_c1(const std::vector<std::string>& args) {
   job.exact = parsed.is_set("exact");
   job.dimension = parsed.is_set("dimension");
   job.levels = static_cast<int>(parsed.integer("levels"));
+  job.degree = static_cast<int>(parsed.integer_in("degree", 0, 5));
+  job.degree_selection = parsed.value("degree-selection");
   for (const auto& [name, field] : {std::pair<const char*, std::string*>{"report", &job.report},
                                     {"mesh", &job.mesh},
                                     {"save", &job.save},

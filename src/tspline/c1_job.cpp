@@ -129,6 +129,7 @@ Json run(const C1_job& job, std::ostream& out) {
   const TS::Fit fit = job.fit == "interpolate" ? TS::Fit::Interpolate
                       : job.fit == "tangent"   ? TS::Fit::Tangent_planes
                       : job.fit == "lsq"       ? TS::Fit::Least_squares
+                      : job.fit == "local"     ? TS::Fit::Local_polynomial
                                                : TS::Fit::Approximate;
   progress("c1", "building the plan of " + std::to_string(domain.number_of_faces()) + " patches",
            large);
@@ -137,7 +138,10 @@ Json run(const C1_job& job, std::ostream& out) {
                                        : TS::Corner_frame::Corner_and_two_stars);
   timings.set("plan", clock.lap());
   progress("c1", "fitting and propagating", large);
-  TS::fit_vertex_data(spline, input.values, fit);
+  const TS::Fit_statistics fit_statistics = TS::fit_vertex_data(
+      spline, input.values, fit, job.degree,
+      job.degree_selection == "largest" ? TS::Degree_selection::Largest
+                                        : TS::Degree_selection::Cross_validation);
   timings.set("fit_and_propagate", clock.lap());
 
   const auto& d = spline.domain();
@@ -171,6 +175,16 @@ Json run(const C1_job& job, std::ostream& out) {
   report.set("number_type", job.exact ? "exact" : "double");
   report.set("fit", job.fit);
   report.set("fix", job.fix);
+  if (fit == TS::Fit::Local_polynomial || fit == TS::Fit::Least_squares) {
+    Json local = Json::object();
+    local.set("max_degree", job.degree);
+    local.set("degree_selection", job.degree_selection);
+    Json by_degree = Json::array();
+    for (std::size_t count : fit_statistics.vertices_by_degree)
+      by_degree.push_back(count);
+    local.set("vertices_by_degree", by_degree);
+    report.set("local_polynomials", local);
+  }
   report.set("vertices", d.number_of_vertices());
   report.set("faces", d.number_of_faces());
   report.set("interior_edges", d.number_of_interior_edges());
@@ -333,9 +347,14 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
 
 Json run_c1_job(const C1_job& job, std::ostream& out) {
   if (job.fit != "approximate" && job.fit != "interpolate" && job.fit != "tangent" &&
-      job.fit != "lsq")
-    throw Usage_error("--fit must be approximate, interpolate, tangent or lsq, not '" + job.fit +
+      job.fit != "lsq" && job.fit != "local")
+    throw Usage_error("--fit must be local, lsq, tangent, interpolate or approximate, not '" +
+                      job.fit + "'");
+  if (job.degree_selection != "cv" && job.degree_selection != "largest")
+    throw Usage_error("--degree-selection must be cv or largest, not '" + job.degree_selection +
                       "'");
+  if (job.degree < 0 || job.degree > 5)
+    throw Usage_error("--degree must be between 0 and 5, not " + std::to_string(job.degree));
   if (job.fix != "reroute" && job.fix != "perturb")
     throw Usage_error("--fix must be reroute or perturb, not '" + job.fix + "'");
   if (job.levels < 0 || job.levels > 8)

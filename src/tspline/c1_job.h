@@ -13,18 +13,20 @@
 namespace tspline {
 
 struct C1_job {
-  std::string input; // .xyz scattered data or a mesh (OFF/OBJ/PLY/STL); empty: demo data
-  std::string fit = "approximate"; // approximate | interpolate | tangent
-  std::string fix = "reroute";     // reroute | perturb
-  bool exact = false;              // exact rational arithmetic (a proof of C^1)
-  bool dimension = false;          // compute the exact rank dimension of S^1_5
-  std::string report;              // JSON report path
-  std::string mesh;                // tessellated mesh path (.ply/.off/.obj)
-  int levels = 3;                  // 4-split levels of the tessellation
-  std::string save;                // .spline path
-  std::string query;               // query points (x y per line)
-  std::string values;              // output of the query values
-  bool quiet = false;              // no summary on `out`
+  std::string input;         // .xyz scattered data or a mesh (OFF/OBJ/PLY/STL); empty: demo data
+  std::string fit = "local"; // local | lsq | tangent | interpolate | approximate
+  int degree = 5;            // largest degree of the local polynomials (local, lsq)
+  std::string degree_selection = "cv"; // cv (cross-validation) | largest
+  std::string fix = "reroute";         // reroute | perturb
+  bool exact = false;                  // exact rational arithmetic (a proof of C^1)
+  bool dimension = false;              // compute the exact rank dimension of S^1_5
+  std::string report;                  // JSON report path
+  std::string mesh;                    // tessellated mesh path (.ply/.off/.obj)
+  int levels = 3;                      // 4-split levels of the tessellation
+  std::string save;                    // .spline path
+  std::string query;                   // query points (x y per line)
+  std::string values;                  // output of the query values
+  bool quiet = false;                  // no summary on `out`
 };
 
 // Runs the job, writes the requested files, prints a summary on `out` and returns the

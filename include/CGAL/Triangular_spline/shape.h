@@ -6,12 +6,14 @@
 
 #include <CGAL/Triangular_spline/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/local_polynomial_fit.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,9 +48,18 @@ enum class Fit {
   /// weights, and the least-squares choice keeps the propagated points near the data
   /// instead of letting them overshoot. The solve runs in `double`; the free values are
   /// then converted to `FT` and propagated in `FT`, so an exact spline is still exactly C^1
-  /// (linear data is then reproduced up to the solve's rounding). Needs
+  /// (linear data is then reproduced up to the solve's rounding). The targets are those of
+  /// `Local_polynomial`. Needs `Corner_frame::Corner_and_two_stars`
+  Least_squares,
+  /// interpolation of the values; every free point takes the polar value of the local
+  /// polynomial (`Local_polynomials`, degree 3 by default) of its nearest corner, averaged
+  /// on ties. All points of a corner region, and every corner-inner and edge-middle point,
+  /// then come from one polynomial, so propagation through them reproduces it whatever its
+  /// weights; only the flip points of an edge mix the polynomials of its two ends. Data
+  /// from a polynomial of degree at most the local degree are reproduced exactly (exactly
+  /// with an exact number type); local in time and memory. Needs
   /// `Corner_frame::Corner_and_two_stars`
-  Least_squares
+  Local_polynomial
 };
 
 /*!
@@ -182,16 +193,30 @@ void least_squares_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief sets every free control point of `spline` from the data `values` (one per domain
-  vertex) according to `fit`, then propagates.
+  vertex) according to `fit`, then propagates, and returns what it did.
 
   Every mode reproduces data sampled from a linear function exactly (every prescribed point
-  is then the linear function's polar value, and propagation preserves it).
-  \throws Invalid_input if `values` has the wrong size or a non-finite value, or if
-  `Interpolate`/`Tangent_planes` is asked of a spline whose corner points are not free.
+  is then the linear function's polar value, and propagation preserves it; for
+  `Local_polynomial` and `Least_squares` with `local_degree` at least 1).
+  `local_degree` is the largest degree of the local polynomials of `Local_polynomial` and
+  `Least_squares` (0..5).
+  \throws Invalid_input if `values` has the wrong size or a non-finite value, or if a fit
+  other than `Approximate` is asked of a spline whose corner points are not free.
 */
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief what `fit_vertex_data()` did: the degrees of the local polynomials
+  (`Local_polynomial` and `Least_squares` fits; all zero otherwise).
+*/
+struct Fit_statistics {
+  /// `vertices_by_degree[d]`: the number of vertices whose local polynomial has degree `d`
+  std::array<std::size_t, 6> vertices_by_degree{};
+};
+
 template <class GeomTraits, class Value>
-void fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<Value>& values,
-                     Fit fit) {
+Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
+                               const std::vector<Value>& values, Fit fit, int local_degree = 3,
+                               Degree_selection selection = Degree_selection::Cross_validation) {
   using FT = typename GeomTraits::FT;
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   const auto& domain = spline.domain();
@@ -205,8 +230,15 @@ void fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::ve
     throw Invalid_input("fit: interpolation needs corner points to be prescribed "
                         "(build the spline with Corner_frame::Corner_and_two_stars)");
   std::vector<std::array<Value, 2>> gradients;
-  if (fit == Fit::Tangent_planes || fit == Fit::Least_squares)
+  if (fit == Fit::Tangent_planes)
     gradients = estimate_gradients(domain, values);
+  std::optional<Local_polynomials<GeomTraits, Value>> local;
+  if (fit == Fit::Local_polynomial || fit == Fit::Least_squares)
+    local.emplace(domain, values, local_degree, selection);
+  Fit_statistics statistics;
+  if (local)
+    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+      ++statistics.vertices_by_degree[std::size_t(local->degree(v))];
   // The value a slot should take from the data: polar blend, or tangent plane of the
   // nearest corner(s) at the slot's domain point.
   auto target = [&](Slot s) {
@@ -220,6 +252,20 @@ void fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::ve
     int largest = 0;
     for (const auto& entry : label)
       largest = (std::max)(largest, entry.second);
+    if (local) {
+      std::array<std::pair<const typename GeomTraits::Point_2*, int>, 3> arguments;
+      std::size_t count = 0;
+      for (const auto& [vertex, multiplicity] : label)
+        arguments[count++] = {&domain.point(vertex), multiplicity};
+      int ties = 0;
+      for (const auto& entry : label) {
+        if (entry.second != largest)
+          continue;
+        v = v + local->polar_value(entry.first, arguments.begin(), arguments.begin() + count, 5);
+        ++ties;
+      }
+      return ties == 1 ? v : Value((FT(1) / FT(ties)) * v);
+    }
     const auto x = spline.domain_point(s);
     int ties = 0;
     for (const auto& [vertex, multiplicity] : label) {
@@ -238,6 +284,7 @@ void fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::ve
       spline.set_free_value(s, target(s));
   }
   spline.propagate();
+  return statistics;
 }
 
 } // namespace Triangular_spline
