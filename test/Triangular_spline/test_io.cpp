@@ -898,3 +898,97 @@ TYPED_TEST(SplineFile, CountsMustFitTheFile) {
         << message;
   }
 }
+
+// Issue 13, defects 4 and 6: mesh headers are checked against the file size before CGAL's
+// readers allocate, and face indices must be integers (CGAL truncated "1.5" to 1).
+TYPED_TEST(MeshDomain, RejectsImpossibleCountsBeforeAllocating) {
+  using K = TypeParam;
+  Temporary_directory dir;
+  auto read = [](const std::string& path) { return [path] { TS::read_mesh_domain<K>(path); }; };
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  const std::string off = dir.write("faces.off", "OFF\n3 2000000000 0\n" + vertices + "3 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(off), {off + ":2:", "announces 2000000000 faces", "-byte file"}));
+  const std::string off_v = dir.write("vertices.off", "OFF 4000000000 1 0\n" + vertices);
+  EXPECT_TRUE(throws_with(read(off_v), {off_v + ":1:", "announces 4000000000 vertices"}));
+  // Binary OFF: big-endian int32 counts after the keyword line.
+  auto binary_off = [&](const std::string& name, std::int32_t v, std::int32_t f) {
+    std::string text = "OFF BINARY\n";
+    for (const std::int32_t i : {v, f, 0})
+      for (int shift = 24; shift >= 0; shift -= 8)
+        text += static_cast<char>((static_cast<std::uint32_t>(i) >> shift) & 0xff);
+    return dir.write(name, text + std::string(48, '\0'));
+  };
+  const std::string binary_faces = binary_off("binary_faces.off", 3, 2000000000);
+  EXPECT_TRUE(throws_with(read(binary_faces), {binary_faces + ":1:", "2000000000 faces"}));
+  const std::string binary_minus = binary_off("binary_minus.off", -3, 1);
+  EXPECT_TRUE(throws_with(read(binary_minus), {binary_minus + ":1:", "negative vertex count -3"}));
+  const std::string negative = std::string(TSPLINE_BAD_DATA_DIR) + "/negative_count.off";
+  EXPECT_TRUE(throws_with(read(negative), {negative + ":2:", "invalid face count \"-1\""}));
+  const std::string huge = std::string(TSPLINE_BAD_DATA_DIR) + "/huge_count.ply";
+  EXPECT_TRUE(throws_with(read(huge), {huge + ":8:", "announces 2000000000 \"face\" elements"}));
+  const std::string ply_header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                                 "property double y\nproperty double z\nelement face F\n"
+                                 "property list uchar int vertex_indices\nend_header\n";
+  auto ply = [&](const std::string& name, const std::string& faces, const std::string& body) {
+    std::string header = ply_header;
+    return dir.write(name, header.replace(header.find(" F\n"), 3, " " + faces + "\n") + body);
+  };
+  const std::string minus = ply("minus.ply", "-1", vertices);
+  EXPECT_TRUE(throws_with(read(minus), {minus + ":7:", "invalid element count \"-1\""}));
+  // The list length of a face, ASCII and binary: CGAL resizes to it before reading.
+  const std::string long_list = ply("list.ply", "1", vertices + "2000000000 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(long_list), {long_list + ":13:", "face 0", "2000000000 values"}));
+  std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                       "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+                       "property list int int vertex_indices\nend_header\n";
+  for (const float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f})
+    binary.append(reinterpret_cast<const char*>(&c), sizeof c);
+  for (const std::int32_t i : {2000000000, 0, 1, 2})
+    binary.append(reinterpret_cast<const char*>(&i), sizeof i);
+  const std::string binary_ply = dir.write("binary.ply", binary);
+  EXPECT_TRUE(throws_with(read(binary_ply), {binary_ply, "face 0", "2000000000 values"}));
+  // The same file with a correct length reads.
+  binary.replace(binary.size() - 16, 4, std::string("\3\0\0\0", 4));
+  EXPECT_EQ(TS::read_mesh_domain<K>(dir.write("binary_ok.ply", binary)).first.number_of_faces(),
+            1u);
+}
+
+TYPED_TEST(MeshDomain, RejectsFractionalAndLongIndices) {
+  using K = TypeParam;
+  Temporary_directory dir;
+  auto read = [](const std::string& path) { return [path] { TS::read_mesh_domain<K>(path); }; };
+  const std::string fractional = std::string(TSPLINE_BAD_DATA_DIR) + "/fractional_index.off";
+  EXPECT_TRUE(throws_with(read(fractional),
+                          {fractional + ":6:", "face 0", "invalid vertex index \"1.5\""}));
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  for (const char* face : {"3 0 -1 2", "3 0 1e0 2", "3.0 0 1 2", "3 0 1 3", "4 0 1 2"}) {
+    SCOPED_TRACE(face);
+    const std::string off = dir.write("face.off", "OFF\n3 1 0\n" + vertices + face + "\n");
+    EXPECT_TRUE(throws_with(read(off), {off + ":6:", "face 0"}));
+  }
+  for (const char* face : {"f 1 2.5 3", "f 1 0 3", "f 1 2 -4", "f 1 2 4", "f 1 2x 3"}) {
+    SCOPED_TRACE(face);
+    const std::string obj = dir.write("face.obj", "v " + vertices.substr(0, 6) +
+                                                      "v 1 0 0\n"
+                                                      "v 0 1 0\n" +
+                                                      face + "\n");
+    EXPECT_TRUE(throws_with(read(obj), {obj + ":4:", "face corner"}));
+  }
+  const std::string ply = dir.write(
+      "face.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                  "property double z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                  "end_header\n" +
+                      vertices + "3 0 1.5 2\n");
+  EXPECT_TRUE(throws_with(read(ply), {ply + ":13:", "face 0", "\"1.5\" is not an integer"}));
+  // A megabyte index is quoted short.
+  const std::string off = dir.write("long.off", "OFF\n3 1 0\n" + vertices + "3 0 1 " +
+                                                    std::string(1000000, '2') + "\n");
+  try {
+    TS::read_mesh_domain<K>(off);
+    ADD_FAILURE() << "no exception";
+  } catch (const Invalid_input& e) {
+    EXPECT_LT(std::string(e.what()).size(), off.size() + 160)
+        << std::string(e.what()).substr(0, 300);
+    EXPECT_NE(std::string(e.what()).find("(1000000 characters)"), std::string::npos);
+  }
+}
