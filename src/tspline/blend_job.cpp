@@ -13,6 +13,7 @@
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
 #include <CGAL/Triangular_spline/Blending/blending_continuity.h>
 #include <CGAL/Triangular_spline/Blending/test_meshes.h>
+#include <CGAL/Triangular_spline/IO/mesh_domain.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 
 #include <algorithm>
@@ -57,43 +58,11 @@ bool quietly(Read read) {
 // repairing it silently), then converted; normals from NOFF and PLY files.
 Mesh read_mesh(const std::string& path, bool& normals_in_file) {
   const std::string ext = lowercase_extension(path);
-  if (ext != "off" && ext != "ply" && ext != "obj" && ext != "stl")
-    throw TS::Invalid_input(path + ": unsupported mesh file extension '." + ext +
-                            "' (expected .off, .ply, .obj or .stl)");
-  if (!std::ifstream(path))
-    throw TS::Invalid_input(path + ": cannot open the file");
   std::vector<Point_3> points;
   std::vector<std::vector<std::size_t>> polygons;
   std::vector<Vector_3> normals;
-  bool read = false;
-  if (ext == "off") {
-    std::ifstream in(path);
-    read = quietly([&] {
-      return CGAL::IO::read_OFF(
-          in, points, polygons,
-          CGAL::parameters::vertex_normal_output_iterator(std::back_inserter(normals)));
-    });
-  } else {
-    read = quietly([&] { return CGAL::IO::read_polygon_soup(path, points, polygons); });
-  }
-  if (!read)
-    throw TS::Invalid_input(path + ": cannot read the file as a ." + ext + " mesh");
-  if (polygons.empty())
-    throw TS::Invalid_input(path + ": the mesh has no face");
-  for (std::size_t f = 0; f < polygons.size(); ++f) {
-    if (polygons[f].size() < 3)
-      throw TS::Invalid_input(path + ": face " + std::to_string(f) + " has fewer than 3 vertices");
-    for (std::size_t v : polygons[f])
-      if (v >= points.size())
-        throw TS::Invalid_input(path + ": face " + std::to_string(f) + " refers to vertex " +
-                                std::to_string(v) + " but there are only " +
-                                std::to_string(points.size()));
-  }
-  for (std::size_t v = 0; v < points.size(); ++v)
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(points[v][c]))
-        throw TS::Invalid_input(path + ": vertex " + std::to_string(v) +
-                                " has a coordinate that is not finite");
+  // The checked reader of every command (counts, indices, finite coordinates).
+  TS::read_mesh_soup(path, points, polygons, &normals);
   if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
     throw TS::Invalid_input(path + ": not a manifold, consistently oriented polygon mesh (an "
                                    "edge has more than two faces, a vertex several umbrellas, "

@@ -9,11 +9,12 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/Triangular_spline/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/IO/mesh_domain.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
 #include <CGAL/Triangular_spline/tessellate.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <chrono>
 #include <cstdio>
@@ -107,21 +108,7 @@ Scene load_spline(const Render_job& job, Progress& progress) {
   if (!in)
     throw std::runtime_error("cannot open '" + job.input + "'");
   // The header says whether the values are heights or points: peek, then read the file.
-  std::string line;
-  int dimension = 1;
-  while (std::getline(in, line)) {
-    std::istringstream tokens(line);
-    std::string keyword, value, extra;
-    tokens >> keyword >> value;
-    if (keyword == "dimension" && !(tokens >> extra)) {
-      dimension = value == "3" ? 3 : 1;
-      break;
-    }
-    if (keyword == "vertices" || keyword == "faces")
-      break;
-  }
-  in.clear();
-  in.seekg(0);
+  const int dimension = TS::spline_file_dimension(in);
   Scene scene;
   if (dimension == 3)
     tessellate_spline_file<K::Vector_3>(in, job.input, job, progress, scene);
@@ -133,27 +120,29 @@ Scene load_spline(const Render_job& job, Progress& progress) {
 Scene load_mesh(const Render_job& job) {
   Scene scene;
   scene.kind = "mesh";
-  const std::string ext = lowercase_extension(job.input);
-  if (!std::ifstream(job.input))
-    throw std::runtime_error("cannot open '" + job.input + "'");
-  // CGAL's readers print their own diagnostics on std::cerr; ours is the one-line error.
-  struct Silence {
-    std::ostringstream sink;
-    std::streambuf* saved = std::cerr.rdbuf(sink.rdbuf());
-    ~Silence() { std::cerr.rdbuf(saved); }
-  } silence;
-  bool ok = false;
-  if (ext == "ply") {
+  // The reader that c1, mann and blend use: CGAL's readers trust the file's counts and
+  // indices, and NaN coordinates would draw a blank picture.
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  TS::read_mesh_soup(job.input, points, polygons);
+  if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+    throw TS::Invalid_input(job.input + ": not a manifold, consistently oriented polygon mesh");
+  if (lowercase_extension(job.input) == "ply") {
     // Surface_mesh's own PLY reader keeps every vertex property, e.g. the normals and
-    // curvatures that `tspline c1 --mesh` writes.
+    // curvatures that `tspline c1 --mesh` writes; the file has passed the checks above.
+    struct Silence { // CGAL's diagnostics on std::cerr
+      std::ostringstream sink;
+      std::streambuf* saved = std::cerr.rdbuf(sink.rdbuf());
+      ~Silence() { std::cerr.rdbuf(saved); }
+    } silence;
     std::ifstream in(job.input, std::ios::binary);
-    ok = CGAL::IO::read_PLY(in, scene.mesh);
-  } else {
-    ok = CGAL::IO::read_polygon_mesh(job.input, scene.mesh);
+    const bool ok = CGAL::IO::read_PLY(in, scene.mesh);
+    if (ok && scene.mesh.number_of_vertices() == points.size() &&
+        scene.mesh.number_of_faces() == polygons.size())
+      return scene;
+    scene.mesh.clear();
   }
-  if (!ok)
-    throw std::runtime_error("cannot read '" + job.input +
-                             "' as a polygon mesh (it must be a valid, manifold ." + ext + ")");
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, scene.mesh);
   return scene;
 }
 

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +25,7 @@
 #include <initializer_list>
 #include <sstream>
 #include <string>
+#include <vector>
 
 using namespace ts_test;
 using TS::Invalid_input;
@@ -128,9 +130,8 @@ TEST(NumberParsing, RejectionsQuoteTheToken) {
     EXPECT_TRUE(throws_with(parse(""), {"empty"}));
     for (const char* token : {"nan", "NaN", "-nan", "inf", "-Inf", "infinity"})
       EXPECT_TRUE(throws_with(parse(token), {"\"" + std::string(token) + "\"", "not finite"}));
-    for (const std::string& token :
-         {std::string("1e200"), std::string("-1e151"), std::string("1.0000000000000001e151"),
-          std::string("2e150"), "1" + std::string(155, '0')})
+    for (const std::string& token : {std::string("1e200"), std::string("-1e151"),
+                                     std::string("1.0000000000000001e151"), std::string("2e150")})
       EXPECT_TRUE(throws_with(parse(token), {"\"" + token + "\"", "too large"}));
     for (const char* token : {"abc", "1.2.3", "1e", "1e+", "e5", ".", "-", "1,5", "0x10", "1 2",
                               "12abc", "--1", "1e5.0", "1/"})
@@ -150,6 +151,46 @@ TEST(NumberParsing, RejectionsQuoteTheToken) {
   EXPECT_TRUE(throws_with([] { TS::parse_number<Exact_FT>("2" + std::string(150, '0') + "/0001"); },
                           {"too large"}));
   EXPECT_EQ(TS::parse_number<Exact_FT>("0003/0004"), Exact_FT(3) / Exact_FT(4));
+}
+
+TEST(NumberParsing, LongTokensAreQuotedShort) {
+  // Issue 13: a 10^6-digit token was echoed in full, a 1 MB error line.
+  for (const std::size_t digits : {std::size_t(156), std::size_t(1000000)}) {
+    const std::string token = "1" + std::string(digits - 1, '0');
+    for (const bool exact : {false, true}) {
+      try {
+        if (exact)
+          TS::parse_number<Exact_FT>(token);
+        else
+          TS::parse_number<double>(token);
+        ADD_FAILURE() << "no exception";
+      } catch (const Invalid_input& e) {
+        const std::string message = e.what();
+        EXPECT_LT(message.size(), 120u) << message.substr(0, 200);
+        EXPECT_NE(message.find("\"1" + std::string(39, '0') + "...\" (" + std::to_string(digits) +
+                               " characters)"),
+                  std::string::npos)
+            << message.substr(0, 200);
+        EXPECT_NE(message.find("too large"), std::string::npos);
+      }
+    }
+  }
+  // Up to 40 characters a token is quoted whole.
+  const std::string forty = "1" + std::string(39, 'x');
+  EXPECT_TRUE(throws_with([&] { TS::parse_number<double>(forty); }, {"\"" + forty + "\" is not"}));
+}
+
+TEST(TextTokens, EveryBlankSeparatesTokens) {
+  using V = std::vector<std::string>;
+  EXPECT_EQ(TS::internal::split_tokens(""), V());
+  for (const char* blank : {" ", "\t", "\r", "\f", "\v", "\r\r", " \t\r\f\v"}) {
+    SCOPED_TRACE(::testing::PrintToString(std::string(blank)));
+    EXPECT_EQ(TS::internal::split_tokens(blank), V());
+    EXPECT_EQ(TS::internal::tokens_of_line(blank), V());
+    const std::string b = blank;
+    EXPECT_EQ(TS::internal::split_tokens(b + "a" + b + "bc" + b), (V{"a", "bc"}));
+    EXPECT_EQ(TS::internal::tokens_of_line("a" + b + "b#" + b + "c"), (V{"a", "b"}));
+  }
 }
 
 TEST(NumberParsing, FormatRoundTrips) {
@@ -217,6 +258,14 @@ TYPED_TEST(ScatteredData, ReadsPointsCommentsAndBlankLines) {
   EXPECT_EQ(data.points[3], typename K::Point_2(ratio<K>(1, 2), ratio<K>(1, 2)));
   EXPECT_EQ(data.values[3], ratio<K>(3, 4));
   EXPECT_TRUE(throws_with([&] { TS::read_xyz<K>(in, "bad.xyz"); }, {"bad.xyz:6:", "\"3/4x\""}));
+}
+
+TYPED_TEST(ScatteredData, EveryBlankCharacterIsBlank) {
+  using K = TypeParam;
+  std::istringstream in("\f\n0\v0\f1\n\v\n\r\r\n1 0 2\r\n \t\r\f\v\n0 1 3\n\f");
+  const TS::Scattered_data<K> data = TS::read_xyz<K>(in, "blank.xyz");
+  ASSERT_EQ(data.points.size(), 3u);
+  EXPECT_EQ(data.values[0], typename K::FT(1));
 }
 
 TYPED_TEST(ScatteredData, MergesDuplicatesWithTheSameHeight) {
@@ -727,7 +776,7 @@ TYPED_TEST(SplineFile, MalformedFilesAreRejectedWithTheLine) {
   EXPECT_TRUE(throws_with(read(replace("tspline-spline 1", "tspline-splin 1")),
                           {"s.spline:1:", "not a tspline spline file"}));
   EXPECT_TRUE(throws_with(read(replace("tspline-spline 1", "tspline-spline 2")),
-                          {"s.spline:1:", "unsupported version 2"}));
+                          {"s.spline:1:", "unsupported version \"2\""}));
   EXPECT_TRUE(throws_with(read(replace("degree 1\n", "")), {"s.spline:2:", "expected \"degree"}));
   EXPECT_TRUE(throws_with(read(replace("degree 1", "degree -1")),
                           {"s.spline:2:", "invalid degree \"-1\""}));
@@ -780,4 +829,166 @@ TYPED_TEST(SplineFile, MalformedFilesAreRejectedWithTheLine) {
   EXPECT_TRUE(throws_with(
       read(replace("faces 2\n0 1 2\n0 2 3\npatches\n1 2 3\n", "faces 1\n0 1 2\npatches\n")),
       {"s.spline: domain:", "vertex 3", "not used"}));
+}
+
+// Issue 13, defect 1: a line of blanks other than space and tab ("\r\r" is enough) was taken
+// for a line with a token, and the reader read a token that was not there (a segfault).
+TYPED_TEST(SplineFile, BlankOnlyLinesAreBlank) {
+  using K = TypeParam;
+  const std::string good = "tspline-spline 1\ndegree 1\ndimension 1\nnumber_type exact\n"
+                           "vertices 3\n0 0\n1 0\n0 1\nfaces 1\n0 1 2\npatches\n1 2 3\nend\n";
+  for (const char* blank : {"\r", "\f", "\v", "\r\r", " \t\r\f\v"}) {
+    const std::string b = blank;
+    SCOPED_TRACE(::testing::PrintToString(b));
+    // A blank line before every line and at the end, and blanks around every token.
+    std::string text = b + "\n";
+    for (char c : good)
+      text += c == '\n' ? b + "\n" + b + "\n" + b : c == ' ' ? b + " " + b : std::string(1, c);
+    std::istringstream in(text);
+    EXPECT_EQ(TS::spline_file_dimension(in), 1);
+    const auto spline = TS::read_spline_file<K>(in, "blank.spline");
+    EXPECT_EQ(spline.patches.at(0).control_points().at(2), typename K::FT(3));
+    for (const std::string& alone : {b, b + "\n", b + "\n" + b})
+      EXPECT_TRUE(throws_with(
+          [&] {
+            std::istringstream only(alone);
+            TS::read_spline_file<K>(only, "blank.spline");
+          },
+          {"blank.spline:", "unexpected end of file"}));
+  }
+  const std::string reproducer = std::string(TSPLINE_BAD_DATA_DIR) + "/blank_lines.spline";
+  std::ifstream file(reproducer, std::ios::binary);
+  ASSERT_TRUE(file) << reproducer;
+  EXPECT_TRUE(throws_with([&] { TS::read_spline_file<K>(file, reproducer); },
+                          {reproducer + ":1:", "unexpected end of file"}));
+}
+
+// Issue 13, defects 4 and 6: counts that cannot fit in the file fail at their line, and
+// long tokens are quoted short.
+TYPED_TEST(SplineFile, CountsMustFitTheFile) {
+  using K = TypeParam;
+  const std::string good = "tspline-spline 1\ndegree 1\ndimension 1\nnumber_type exact\n"
+                           "vertices 3\n0 0\n1 0\n0 1\nfaces 1\n0 1 2\npatches\n1 2 3\nend\n";
+  auto read = [](const std::string& text) {
+    return [text] {
+      std::istringstream in(text);
+      TS::read_spline_file<K>(in, "s.spline");
+    };
+  };
+  auto replace = [&](const std::string& from, const std::string& to) {
+    std::string s = good;
+    return s.replace(s.find(from), from.size(), to);
+  };
+  EXPECT_TRUE(throws_with(read(replace("vertices 3", "vertices 2000000000")),
+                          {"s.spline:5:", "vertex count 2000000000 cannot fit", "bytes left"}));
+  // 3 vertex lines and a face line fit, but not 2 faces with their patches.
+  EXPECT_TRUE(
+      throws_with(read(replace("faces 1", "faces 3")), {"s.spline:9:", "face count 3 cannot fit"}));
+  EXPECT_TRUE(throws_with(read(replace("faces 1", "faces -1")),
+                          {"s.spline:9:", "invalid face count \"-1\""}));
+  const std::string digits(1000000, '7');
+  try {
+    read(replace("vertices 3", "vertices " + digits))();
+    ADD_FAILURE() << "no exception";
+  } catch (const Invalid_input& e) {
+    const std::string message = e.what();
+    EXPECT_LT(message.size(), 140u) << message.substr(0, 200);
+    EXPECT_NE(message.find("s.spline:5: vertex count \"7777"), std::string::npos) << message;
+    EXPECT_NE(message.find("...\" (1000000 characters) is out of range"), std::string::npos)
+        << message;
+  }
+}
+
+// Issue 13, defects 4 and 6: mesh headers are checked against the file size before CGAL's
+// readers allocate, and face indices must be integers (CGAL truncated "1.5" to 1).
+TYPED_TEST(MeshDomain, RejectsImpossibleCountsBeforeAllocating) {
+  using K = TypeParam;
+  Temporary_directory dir;
+  auto read = [](const std::string& path) { return [path] { TS::read_mesh_domain<K>(path); }; };
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  const std::string off = dir.write("faces.off", "OFF\n3 2000000000 0\n" + vertices + "3 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(off), {off + ":2:", "announces 2000000000 faces", "-byte file"}));
+  const std::string off_v = dir.write("vertices.off", "OFF 4000000000 1 0\n" + vertices);
+  EXPECT_TRUE(throws_with(read(off_v), {off_v + ":1:", "announces 4000000000 vertices"}));
+  // Binary OFF: big-endian int32 counts after the keyword line.
+  auto binary_off = [&](const std::string& name, std::int32_t v, std::int32_t f) {
+    std::string text = "OFF BINARY\n";
+    for (const std::int32_t i : {v, f, 0})
+      for (int shift = 24; shift >= 0; shift -= 8)
+        text += static_cast<char>((static_cast<std::uint32_t>(i) >> shift) & 0xff);
+    return dir.write(name, text + std::string(48, '\0'));
+  };
+  const std::string binary_faces = binary_off("binary_faces.off", 3, 2000000000);
+  EXPECT_TRUE(throws_with(read(binary_faces), {binary_faces + ":1:", "2000000000 faces"}));
+  const std::string binary_minus = binary_off("binary_minus.off", -3, 1);
+  EXPECT_TRUE(throws_with(read(binary_minus), {binary_minus + ":1:", "negative vertex count -3"}));
+  const std::string negative = std::string(TSPLINE_BAD_DATA_DIR) + "/negative_count.off";
+  EXPECT_TRUE(throws_with(read(negative), {negative + ":2:", "invalid face count \"-1\""}));
+  const std::string huge = std::string(TSPLINE_BAD_DATA_DIR) + "/huge_count.ply";
+  EXPECT_TRUE(throws_with(read(huge), {huge + ":8:", "announces 2000000000 \"face\" elements"}));
+  const std::string ply_header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\n"
+                                 "property double y\nproperty double z\nelement face F\n"
+                                 "property list uchar int vertex_indices\nend_header\n";
+  auto ply = [&](const std::string& name, const std::string& faces, const std::string& body) {
+    std::string header = ply_header;
+    return dir.write(name, header.replace(header.find(" F\n"), 3, " " + faces + "\n") + body);
+  };
+  const std::string minus = ply("minus.ply", "-1", vertices);
+  EXPECT_TRUE(throws_with(read(minus), {minus + ":7:", "invalid element count \"-1\""}));
+  // The list length of a face, ASCII and binary: CGAL resizes to it before reading.
+  const std::string long_list = ply("list.ply", "1", vertices + "2000000000 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(long_list), {long_list + ":13:", "face 0", "2000000000 values"}));
+  std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                       "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+                       "property list int int vertex_indices\nend_header\n";
+  for (const float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f})
+    binary.append(reinterpret_cast<const char*>(&c), sizeof c);
+  for (const std::int32_t i : {2000000000, 0, 1, 2})
+    binary.append(reinterpret_cast<const char*>(&i), sizeof i);
+  const std::string binary_ply = dir.write("binary.ply", binary);
+  EXPECT_TRUE(throws_with(read(binary_ply), {binary_ply, "face 0", "2000000000 values"}));
+  // The same file with a correct length reads.
+  binary.replace(binary.size() - 16, 4, std::string("\3\0\0\0", 4));
+  EXPECT_EQ(TS::read_mesh_domain<K>(dir.write("binary_ok.ply", binary)).first.number_of_faces(),
+            1u);
+}
+
+TYPED_TEST(MeshDomain, RejectsFractionalAndLongIndices) {
+  using K = TypeParam;
+  Temporary_directory dir;
+  auto read = [](const std::string& path) { return [path] { TS::read_mesh_domain<K>(path); }; };
+  const std::string fractional = std::string(TSPLINE_BAD_DATA_DIR) + "/fractional_index.off";
+  EXPECT_TRUE(throws_with(read(fractional),
+                          {fractional + ":6:", "face 0", "invalid vertex index \"1.5\""}));
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  for (const char* face : {"3 0 -1 2", "3 0 1e0 2", "3.0 0 1 2", "3 0 1 3", "4 0 1 2"}) {
+    SCOPED_TRACE(face);
+    const std::string off = dir.write("face.off", "OFF\n3 1 0\n" + vertices + face + "\n");
+    EXPECT_TRUE(throws_with(read(off), {off + ":6:", "face 0"}));
+  }
+  for (const char* face : {"f 1 2.5 3", "f 1 0 3", "f 1 2 -4", "f 1 2 4", "f 1 2x 3"}) {
+    SCOPED_TRACE(face);
+    const std::string obj = dir.write("face.obj", "v " + vertices.substr(0, 6) +
+                                                      "v 1 0 0\n"
+                                                      "v 0 1 0\n" +
+                                                      face + "\n");
+    EXPECT_TRUE(throws_with(read(obj), {obj + ":4:", "face corner"}));
+  }
+  const std::string ply = dir.write(
+      "face.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                  "property double z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                  "end_header\n" +
+                      vertices + "3 0 1.5 2\n");
+  EXPECT_TRUE(throws_with(read(ply), {ply + ":13:", "face 0", "\"1.5\" is not an integer"}));
+  // A megabyte index is quoted short.
+  const std::string off = dir.write("long.off", "OFF\n3 1 0\n" + vertices + "3 0 1 " +
+                                                    std::string(1000000, '2') + "\n");
+  try {
+    TS::read_mesh_domain<K>(off);
+    ADD_FAILURE() << "no exception";
+  } catch (const Invalid_input& e) {
+    EXPECT_LT(std::string(e.what()).size(), off.size() + 160)
+        << std::string(e.what()).substr(0, 300);
+    EXPECT_NE(std::string(e.what()).find("(1000000 characters)"), std::string::npos);
+  }
 }

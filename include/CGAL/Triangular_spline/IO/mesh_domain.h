@@ -4,6 +4,7 @@
 #ifndef CGAL_TRIANGULAR_SPLINE_IO_MESH_DOMAIN_H
 #define CGAL_TRIANGULAR_SPLINE_IO_MESH_DOMAIN_H
 
+#include <CGAL/Triangular_spline/IO/text_tokens.h>
 #include <CGAL/Triangular_spline/Planar_domain.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
@@ -14,8 +15,10 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -24,36 +27,363 @@
 namespace CGAL {
 namespace Triangular_spline {
 
-/*!
-  \ingroup PkgTriangularSplineIO
-  \brief reads a triangle mesh whose vertices \f$(x, y, z)\f$ are a height field over the
-  plane: returns the triangulation of the points \f$(x, y)\f$ as a `Planar_domain` and the
-  height \f$z\f$ of each domain vertex.
+namespace internal {
 
-  The file is read with `CGAL::IO::read_polygon_soup()`, the format chosen by the extension
-  (case-insensitive): `.off`, `.obj`, `.ply`, `.stl`. CGAL reads coordinates as `double`;
-  they are converted exactly into `GeomTraits` (so an exact kernel sees exactly the file's
-  `double` values). Domain vertex `v` is vertex `v` of the file and face `f` is polygon `f`
-  (reoriented counter-clockwise if needed).
+// Checks of a mesh file before CGAL's readers see it: they trust the counts of a header
+// (OFF and PLY reserve them: 2e9 faces cost gigabytes before the file runs out, a negative
+// count wraps to 2^64), convert face indices from double (OFF: "1.5" becomes 1, "3e9"
+// vertices per face are allocated) or stop at the first character that is not a digit
+// (OBJ: "f 1 2.5 3" is the face 1 2 3). Each check reads the file once, without storing it.
 
-  \tparam GeomTraits a model of `Kernel`
-  \param path the file to read
-  \throws Invalid_input naming the file if it cannot be opened, has an unsupported
-  extension, cannot be parsed, holds no polygon, has a polygon that is not a triangle (the
-  message gives its index and size), refers to a missing vertex, or has a coordinate that
-  is not finite or exceeds \f$10^{150}\f$; the `Planar_domain` checks (duplicate points,
-  unused vertices, zero-area or folded triangles, non-manifold edges or vertices) apply to
-  the projection to \f$(x, y)\f$ and their messages are prefixed with the file name.
-*/
-template <class GeomTraits>
-std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
-read_mesh_domain(const std::string& path) {
-  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using FT = typename GeomTraits::FT;
-  using Point_2 = typename GeomTraits::Point_2;
-  using Index = typename Planar_domain<GeomTraits>::Index;
+[[noreturn]] inline void fail_at(const std::string& path, std::size_t line,
+                                 const std::string& message) {
+  throw Invalid_input(path + ":" + std::to_string(line) + ": " + message);
+}
 
-  // read_polygon_soup() only returns false: diagnose the common causes first.
+// Plain decimal digits, at most 18 of them (no sign, fraction or exponent).
+inline bool parse_unsigned(const std::string& token, std::uint64_t& value) {
+  if (token.empty() || token.size() > 18 ||
+      token.find_first_not_of("0123456789") != std::string::npos)
+    return false;
+  value = std::stoull(token);
+  return true;
+}
+
+// An optionally signed integer literal, as an integer property of a PLY file.
+inline bool is_integer_literal(const std::string& token) {
+  const std::size_t sign = !token.empty() && (token[0] == '+' || token[0] == '-') ? 1 : 0;
+  return token.size() > sign && token.find_first_not_of("0123456789", sign) == std::string::npos;
+}
+
+inline std::uint64_t header_count(const std::string& path, std::size_t line,
+                                  const std::string& token, const std::string& what) {
+  std::uint64_t count = 0;
+  if (!parse_unsigned(token, count)) {
+    if (is_integer_literal(token) && token[0] != '-')
+      fail_at(path, line, what + " " + internal::quoted(token) + " is out of range");
+    fail_at(path, line,
+            "invalid " + what + " " + internal::quoted(token) +
+                " (expected a non-negative integer)");
+  }
+  return count;
+}
+
+// Fails unless `count` items of at least `item_bytes` bytes fit in the `left` bytes not yet
+// claimed by earlier counts; returns the bytes still unclaimed.
+inline std::uint64_t claim_bytes(const std::string& path, std::size_t line,
+                                 std::uint64_t file_bytes, std::uint64_t left, std::uint64_t count,
+                                 std::uint64_t item_bytes, const std::string& what) {
+  if (count > left / item_bytes)
+    fail_at(path, line,
+            "the header announces " + std::to_string(count) + " " + what + ", more than the " +
+                std::to_string(file_bytes) + "-byte file can hold (each needs at least " +
+                std::to_string(item_bytes) + " bytes)");
+  return left - count * item_bytes;
+}
+
+// Reads a text file as lines of tokens, `#` comments removed if `comments`.
+class Token_lines {
+public:
+  // `line` lines of the input have already been read.
+  Token_lines(std::istream& input, bool comments, std::size_t line = 0)
+      : m_input(input), m_comments(comments), m_line(line) {}
+  // The next line with a token; false at the end of the file.
+  bool next(std::vector<std::string>& tokens) {
+    std::string text;
+    while (std::getline(m_input, text)) {
+      ++m_line;
+      tokens = m_comments ? tokens_of_line(text) : split_tokens(text);
+      if (!tokens.empty())
+        return true;
+    }
+    return false;
+  }
+  std::size_t line() const { return m_line; }
+
+private:
+  std::istream& m_input;
+  bool m_comments;
+  std::size_t m_line;
+};
+
+// OFF, as CGAL reads it: a header "[ST][C][N][4][n]OFF" (optional), the counts V F E, then
+// one vertex per line and one face "n i_1 ... i_n [colour]" per line.
+inline void check_off_file(const std::string& path, std::istream& input, std::uint64_t file_bytes) {
+  Token_lines lines(input, true);
+  std::vector<std::string> tokens;
+  std::vector<std::string> header; // keyword and counts, over as many lines as they take
+  std::size_t used = 0;            // tokens of the current line taken by the header
+  std::size_t needed = 3;
+  while (header.size() < needed) {
+    if (!lines.next(tokens))
+      return; // too short: CGAL's reader says so
+    for (used = 0; used < tokens.size() && header.size() < needed; ++used) {
+      header.push_back(tokens[used]);
+      const std::string& t = header.back();
+      if (header.size() == 1 && t.size() >= 3 && t.compare(t.size() - 3, 3, "OFF") == 0) {
+        if (t.find('4') != std::string::npos || t[0] == 'n')
+          return; // homogeneous or n-dimensional: not a height field; CGAL decides
+        needed = 4;
+      } else if (header.size() == 2 && needed == 4 && t == "BINARY") {
+        // CGAL skips the rest of the line; big-endian int32 counts V F E follow.
+        unsigned char b[8];
+        if (!input.read(reinterpret_cast<char*>(b), sizeof b))
+          return;
+        auto int32 = [&b](int k) {
+          return static_cast<std::int32_t>(std::uint32_t(b[k]) << 24 |
+                                           std::uint32_t(b[k + 1]) << 16 |
+                                           std::uint32_t(b[k + 2]) << 8 | std::uint32_t(b[k + 3]));
+        };
+        const std::int32_t V = int32(0), F = int32(4);
+        if (V < 0 || F < 0)
+          fail_at(path, lines.line(),
+                  "negative " + std::string(V < 0 ? "vertex" : "face") + " count " +
+                      std::to_string(V < 0 ? V : F) + " in the binary header");
+        // A vertex is three float32, a face at least its size and its colour size (int32).
+        const std::uint64_t left = claim_bytes(path, lines.line(), file_bytes, file_bytes,
+                                               std::uint64_t(V), 12, "vertices");
+        claim_bytes(path, lines.line(), file_bytes, left, std::uint64_t(F), 8, "faces");
+        return;
+      }
+    }
+  }
+  if (needed == 3 && !is_integer_literal(header[0]))
+    return; // neither a keyword nor a count: not an OFF file, CGAL's reader says so
+  const std::size_t at = lines.line();
+  const std::uint64_t V = header_count(path, at, header[needed - 3], "vertex count");
+  const std::uint64_t F = header_count(path, at, header[needed - 2], "face count");
+  // A vertex line "x y z\n" takes at least 6 bytes, a face line "n\n" at least 2.
+  std::uint64_t left = claim_bytes(path, at, file_bytes, file_bytes, V, 6, "vertices");
+  claim_bytes(path, at, file_bytes, left, F, 2, "faces");
+
+  // CGAL reads the rest of the counts' line as the first vertex line.
+  std::uint64_t vertex_lines = used < tokens.size() ? 1 : 0;
+  for (; vertex_lines < V; ++vertex_lines)
+    if (!lines.next(tokens))
+      return;
+  for (std::uint64_t f = 0; f < F && lines.next(tokens); ++f) {
+    const std::string face = "face " + std::to_string(f) + ": ";
+    std::uint64_t n = 0;
+    if (!parse_unsigned(tokens[0], n))
+      fail_at(path, lines.line(),
+              face + "invalid vertex count " + internal::quoted(tokens[0]) +
+                  " (expected an integer)");
+    if (n > tokens.size() - 1)
+      fail_at(path, lines.line(),
+              face + "announces " + std::to_string(n) + " vertices but lists " +
+                  std::to_string(tokens.size() - 1));
+    for (std::size_t i = 1; i <= n; ++i) {
+      std::uint64_t v = 0;
+      if (!parse_unsigned(tokens[i], v))
+        fail_at(path, lines.line(),
+                face + "invalid vertex index " + internal::quoted(tokens[i]) +
+                    " (expected a non-negative integer below " + std::to_string(V) + ")");
+      if (v >= V)
+        fail_at(path, lines.line(),
+                face + "vertex index " + tokens[i] + " is out of range (there are " +
+                    std::to_string(V) + " vertices)");
+    }
+  }
+}
+
+// OBJ: only "v" and "f" lines matter; a face corner is "v[/vt[/vn]]", v counted from 1, or
+// from the end if negative.
+inline void check_obj_file(const std::string& path, std::istream& input) {
+  Token_lines lines(input, true);
+  std::vector<std::string> tokens;
+  std::uint64_t vertices = 0, largest = 0;
+  std::size_t largest_line = 0;
+  while (lines.next(tokens)) {
+    if (tokens[0] == "v") {
+      ++vertices;
+      continue;
+    }
+    if (tokens[0] != "f")
+      continue;
+    for (std::size_t i = 1; i < tokens.size(); ++i) {
+      const std::string index = tokens[i].substr(0, tokens[i].find('/'));
+      const bool negative = !index.empty() && index[0] == '-';
+      std::uint64_t v = 0;
+      // Nine digits: CGAL reads an int, and silently ends the face at a larger one.
+      if (!parse_unsigned(index.substr(negative ? 1 : 0), v) || v == 0 || v > 999999999)
+        fail_at(path, lines.line(),
+                "invalid face corner " + internal::quoted(tokens[i]) +
+                    " (expected a vertex number from 1, or negative from the end)");
+      if (negative && v > vertices)
+        fail_at(path, lines.line(),
+                "face corner " + tokens[i] + " refers back past the first vertex (" +
+                    std::to_string(vertices) + " vertices so far)");
+      if (!negative && v > largest) {
+        largest = v;
+        largest_line = lines.line();
+      }
+    }
+  }
+  if (largest > vertices)
+    fail_at(path, largest_line,
+            "face corner " + std::to_string(largest) + " is out of range (there are " +
+                std::to_string(vertices) + " vertices)");
+}
+
+struct Ply_property {
+  std::string name;
+  bool list = false;
+  int size_bytes = 0; // a list's count, or the scalar
+  bool size_signed = false;
+  int value_bytes = 0; // a list's values
+  bool value_integer = false;
+};
+
+struct Ply_element {
+  std::string name;
+  std::uint64_t count = 0;
+  std::size_t line = 0;
+  std::vector<Ply_property> properties;
+};
+
+// Bytes of a PLY scalar type and whether it is an integer (signed); 0 bytes if unknown.
+inline int ply_type(const std::string& type, bool& integer, bool& is_signed) {
+  static const struct {
+    const char *name, *alias;
+    int bytes;
+    bool integer, is_signed;
+  } types[] = {{"char", "int8", 1, true, true},      {"uchar", "uint8", 1, true, false},
+               {"short", "int16", 2, true, true},    {"ushort", "uint16", 2, true, false},
+               {"int", "int32", 4, true, true},      {"uint", "uint32", 4, true, false},
+               {"float", "float32", 4, false, true}, {"double", "float64", 8, false, true}};
+  for (const auto& t : types)
+    if (type == t.name || type == t.alias) {
+      integer = t.integer;
+      is_signed = t.is_signed;
+      return t.bytes;
+    }
+  return 0;
+}
+
+// PLY: the element counts against the size of the body; then the body itself, element by
+// element, so that no list announces more values than the file holds and an integer
+// property (a face's vertex index) is not written as a fraction.
+inline void check_ply_file(const std::string& path, std::istream& input, std::uint64_t file_bytes) {
+  std::string text;
+  std::size_t line = 0;
+  bool ascii = true, big_endian = false;
+  std::vector<Ply_element> elements;
+  for (bool end = false; !end;) {
+    if (!std::getline(input, text))
+      return; // no end_header: CGAL's reader says so
+    const std::vector<std::string> tokens = split_tokens(text);
+    ++line;
+    if (line == 1 && (tokens.size() != 1 || tokens[0] != "ply"))
+      return; // not a PLY file: CGAL's reader says so
+    if (tokens.empty() || line == 1)
+      continue;
+    if (tokens[0] == "format" && tokens.size() >= 2) {
+      ascii = tokens[1] == "ascii";
+      big_endian = tokens[1] == "binary_big_endian";
+    } else if (tokens[0] == "element" && tokens.size() >= 3) {
+      elements.push_back(
+          {tokens[1], header_count(path, line, tokens[2], "element count"), line, {}});
+    } else if (tokens[0] == "property" && tokens.size() >= 3 && !elements.empty()) {
+      Ply_property p;
+      bool integer = false, is_signed = false;
+      p.list = tokens[1] == "list";
+      const std::string& type = p.list ? tokens[2] : tokens[1];
+      p.size_bytes = ply_type(type, integer, p.size_signed);
+      if (p.size_bytes == 0 || (p.list && !integer))
+        fail_at(path, line, "invalid PLY property type " + internal::quoted(type));
+      p.value_integer = integer;
+      if (p.list) {
+        if (tokens.size() < 5 ||
+            (p.value_bytes = ply_type(tokens[3], p.value_integer, is_signed)) == 0)
+          fail_at(path, line, "invalid PLY list property " + internal::quoted(text));
+      }
+      p.name = tokens.back();
+      elements.back().properties.push_back(p);
+    } else if (tokens[0] == "end_header") {
+      end = true;
+    }
+  }
+  const std::streamoff header_bytes = input.tellg();
+  if (header_bytes < 0)
+    return;
+  const std::uint64_t body_bytes = file_bytes - static_cast<std::uint64_t>(header_bytes);
+  std::uint64_t left = body_bytes;
+  for (const Ply_element& e : elements) {
+    // An ASCII value takes at least a digit and a blank; a binary one its size (a list at
+    // least its count).
+    std::uint64_t item_bytes = 0;
+    for (const Ply_property& p : e.properties)
+      item_bytes += ascii ? 2 : static_cast<std::uint64_t>(p.size_bytes);
+    left = claim_bytes(path, e.line, file_bytes, left, e.count,
+                       (std::max)(item_bytes, std::uint64_t(1)), "\"" + e.name + "\" elements");
+  }
+
+  if (ascii) {
+    // CGAL reads the body token by token, whatever the lines.
+    Token_lines lines(input, false, line);
+    std::vector<std::string> tokens;
+    std::size_t next = 0;
+    auto token = [&]() -> const std::string* {
+      while (next == tokens.size()) {
+        if (!lines.next(tokens))
+          return nullptr;
+        next = 0;
+      }
+      return &tokens[next++];
+    };
+    for (const Ply_element& e : elements)
+      for (std::uint64_t i = 0; i < e.count; ++i)
+        for (const Ply_property& p : e.properties) {
+          const std::string where = e.name + " " + std::to_string(i) + ", " + p.name + ": ";
+          const std::string* t = token();
+          if (t == nullptr)
+            return; // short file: CGAL's reader says so
+          std::uint64_t values = 1;
+          if (p.list && !parse_unsigned(*t, values))
+            fail_at(path, lines.line(),
+                    where + "invalid list length " + internal::quoted(*t) +
+                        " (expected a non-negative integer)");
+          if (p.list && values > body_bytes / 2)
+            fail_at(path, lines.line(),
+                    where + "a list of " + *t + " values cannot fit in the file");
+          for (std::uint64_t k = 0; k < (p.list ? values : 1); ++k) {
+            if (p.list && (t = token()) == nullptr)
+              return;
+            if (p.value_integer && !is_integer_literal(*t))
+              fail_at(path, lines.line(), where + internal::quoted(*t) + " is not an integer");
+          }
+        }
+    return;
+  }
+  // Binary: walk the lists, reading their lengths.
+  left = body_bytes;
+  for (const Ply_element& e : elements)
+    for (std::uint64_t i = 0; i < e.count; ++i)
+      for (const Ply_property& p : e.properties) {
+        unsigned char bytes[8] = {0};
+        if (left < static_cast<std::uint64_t>(p.size_bytes) ||
+            !input.read(reinterpret_cast<char*>(bytes), p.size_bytes))
+          return; // short file: CGAL's reader says so
+        left -= static_cast<std::uint64_t>(p.size_bytes);
+        if (!p.list)
+          continue;
+        std::uint64_t length = 0;
+        for (int b = 0; b < p.size_bytes; ++b)
+          length |= std::uint64_t(bytes[big_endian ? b : p.size_bytes - 1 - b])
+                    << (8 * (p.size_bytes - 1 - b));
+        const bool negative = p.size_signed && (length >> (8 * p.size_bytes - 1)) != 0;
+        if (negative || length > left / static_cast<std::uint64_t>(p.value_bytes))
+          throw Invalid_input(path + ": " + e.name + " " + std::to_string(i) + ", " + p.name +
+                              ": a list of " +
+                              (negative ? "negative length" : std::to_string(length) + " values") +
+                              " does not fit in the file");
+        left -= length * static_cast<std::uint64_t>(p.value_bytes);
+        input.ignore(static_cast<std::streamsize>(length) * p.value_bytes);
+      }
+}
+
+// Lower-case extension of `path` with its dot, or "".
+inline std::string mesh_extension(const std::string& path) {
   const std::size_t dot = path.find_last_of('.');
   const std::size_t slash = path.find_last_of("/\\");
   std::string extension = dot == std::string::npos || (slash != std::string::npos && dot < slash)
@@ -61,14 +391,60 @@ read_mesh_domain(const std::string& path) {
                               : path.substr(dot);
   for (char& c : extension)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl")
-    throw Invalid_input(path + ": unsupported mesh file extension \"" + extension +
-                        "\" (expected .off, .obj, .ply or .stl)");
-  if (!std::ifstream(path))
-    throw Invalid_input(path + ": cannot open the file");
+  return extension;
+}
 
-  std::vector<Epick::Point_3> points3;
-  std::vector<std::vector<std::size_t>> polygons;
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief reads a polygon mesh file as a polygon soup, after checking it: the reader that
+  every command uses for meshes.
+
+  The format is chosen by the extension (case-insensitive): `.off`, `.obj`, `.ply`, `.stl`.
+  Before `CGAL::IO::read_polygon_soup()` (or `CGAL::IO::read_OFF()` when `normals` is given)
+  sees the file, its header counts are checked against the file size (each vertex and face
+  takes a few bytes), and its face indices must be integers: CGAL's readers would reserve
+  any count and truncate `1.5` to a valid index. After the read, every polygon must have at
+  least 3 vertices, every index must name a vertex and every coordinate must be finite.
+
+  \param path the file to read
+  \param points the vertices, in file order
+  \param polygons the faces, as indices into `points`
+  \param normals if not null, receives the vertex normals of an `NOFF` file (else untouched)
+  \throws Invalid_input naming the file (and the line, for the header and face checks) if it
+  cannot be opened, has an unsupported extension, fails a check, cannot be parsed, or holds
+  no polygon; error messages quote at most 40 characters of a token.
+*/
+inline void read_mesh_soup(
+    const std::string& path,
+    std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& points,
+    std::vector<std::vector<std::size_t>>& polygons,
+    std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3>* normals = nullptr) {
+  const std::string extension = internal::mesh_extension(path);
+  if (extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl")
+    throw Invalid_input(path + ": unsupported mesh file extension " + internal::quoted(extension) +
+                        " (expected .off, .obj, .ply or .stl)");
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+      throw Invalid_input(path + ": cannot open the file");
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    in.seekg(0);
+    if (size >= 0) {
+      const auto bytes = static_cast<std::uint64_t>(size);
+      if (extension == ".off")
+        internal::check_off_file(path, in, bytes);
+      else if (extension == ".ply")
+        internal::check_ply_file(path, in, bytes);
+      else if (extension == ".obj")
+        internal::check_obj_file(path, in);
+    }
+  }
+
+  points.clear();
+  polygons.clear();
   // CGAL's readers print their own diagnostics on std::cerr; ours is the one-line error
   // below, so theirs are silenced for the duration of the read.
   bool read = false;
@@ -76,7 +452,14 @@ read_mesh_domain(const std::string& path) {
     std::ostringstream swallowed;
     std::streambuf* saved = std::cerr.rdbuf(swallowed.rdbuf());
     try {
-      read = CGAL::IO::read_polygon_soup(path, points3, polygons);
+      if (normals != nullptr && extension == ".off") {
+        std::ifstream in(path);
+        read = CGAL::IO::read_OFF(
+            in, points, polygons,
+            CGAL::parameters::vertex_normal_output_iterator(std::back_inserter(*normals)));
+      } else {
+        read = CGAL::IO::read_polygon_soup(path, points, polygons);
+      }
     } catch (...) {
       std::cerr.rdbuf(saved);
       throw;
@@ -87,6 +470,55 @@ read_mesh_domain(const std::string& path) {
     throw Invalid_input(path + ": cannot read the file as a " + extension.substr(1) + " mesh");
   if (polygons.empty())
     throw Invalid_input(path + ": the mesh has no face");
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    if (polygons[f].size() < 3)
+      throw Invalid_input(path + ": face " + std::to_string(f) + " has " +
+                          std::to_string(polygons[f].size()) +
+                          " vertices; a face needs at least 3");
+    for (std::size_t v : polygons[f])
+      if (v >= points.size())
+        throw Invalid_input(path + ": face " + std::to_string(f) + " refers to vertex " +
+                            std::to_string(v) + " but there are only " +
+                            std::to_string(points.size()));
+  }
+  for (std::size_t v = 0; v < points.size(); ++v)
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(points[v][c]))
+        throw Invalid_input(path + ": vertex " + std::to_string(v) +
+                            " has a coordinate that is not finite");
+}
+
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief reads a triangle mesh whose vertices \f$(x, y, z)\f$ are a height field over the
+  plane: returns the triangulation of the points \f$(x, y)\f$ as a `Planar_domain` and the
+  height \f$z\f$ of each domain vertex.
+
+  The file is read with `read_mesh_soup()`, the format chosen by the extension
+  (case-insensitive): `.off`, `.obj`, `.ply`, `.stl`. CGAL reads coordinates as `double`;
+  they are converted exactly into `GeomTraits` (so an exact kernel sees exactly the file's
+  `double` values). Domain vertex `v` is vertex `v` of the file and face `f` is polygon `f`
+  (reoriented counter-clockwise if needed).
+
+  \tparam GeomTraits a model of `Kernel`
+  \param path the file to read
+  \throws Invalid_input naming the file for every error of `read_mesh_soup()`, a polygon
+  that is not a triangle (the message gives its index and size), or a coordinate that
+  exceeds \f$10^{150}\f$; the `Planar_domain` checks (duplicate points, unused vertices,
+  zero-area or folded triangles, non-manifold edges or vertices) apply to the projection to
+  \f$(x, y)\f$ and their messages are prefixed with the file name.
+*/
+template <class GeomTraits>
+std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
+read_mesh_domain(const std::string& path) {
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using FT = typename GeomTraits::FT;
+  using Point_2 = typename GeomTraits::Point_2;
+  using Index = typename Planar_domain<GeomTraits>::Index;
+
+  std::vector<Epick::Point_3> points3;
+  std::vector<std::vector<std::size_t>> polygons;
+  read_mesh_soup(path, points3, polygons);
 
   std::vector<std::array<Index, 3>> triangles;
   triangles.reserve(polygons.size());
@@ -96,15 +528,8 @@ read_mesh_domain(const std::string& path) {
       throw Invalid_input(path + ": face " + std::to_string(f) + " has " +
                           std::to_string(polygon.size()) +
                           " vertices; only triangles are supported");
-    std::array<Index, 3> t;
-    for (std::size_t i = 0; i < 3; ++i) {
-      if (polygon[i] >= points3.size())
-        throw Invalid_input(path + ": face " + std::to_string(f) + " refers to vertex " +
-                            std::to_string(polygon[i]) + " but there are only " +
-                            std::to_string(points3.size()));
-      t[i] = static_cast<Index>(polygon[i]);
-    }
-    triangles.push_back(t);
+    triangles.push_back({static_cast<Index>(polygon[0]), static_cast<Index>(polygon[1]),
+                         static_cast<Index>(polygon[2])});
   }
 
   std::vector<Point_2> points;
@@ -114,10 +539,10 @@ read_mesh_domain(const std::string& path) {
   for (std::size_t v = 0; v < points3.size(); ++v) {
     const Epick::Point_3& p = points3[v];
     for (int c = 0; c < 3; ++c)
-      // Checked in double: a NaN must never reach an exact number type's constructor.
-      if (!std::isfinite(p[c]) || std::fabs(p[c]) > 1e150)
+      // Checked in double: a huge value must never reach an exact number type.
+      if (std::fabs(p[c]) > 1e150)
         throw Invalid_input(path + ": vertex " + std::to_string(v) +
-                            " has a coordinate that is not finite or exceeds 1e150");
+                            " has a coordinate that exceeds 1e150");
     points.emplace_back(FT(p.x()), FT(p.y()));
     heights.push_back(FT(p.z()));
   }

@@ -4,6 +4,7 @@
 #ifndef CGAL_TRIANGULAR_SPLINE_IO_NUMBER_PARSING_H
 #define CGAL_TRIANGULAR_SPLINE_IO_NUMBER_PARSING_H
 
+#include <CGAL/Triangular_spline/IO/text_tokens.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
@@ -39,10 +40,6 @@ struct Decimal_token {
   std::string digits;
   long long exponent = 0;
 };
-
-inline std::string quoted(const std::string& token) {
-  return "\"" + token + "\"";
-}
 
 inline bool is_digit(char c) {
   return c >= '0' && c <= '9';

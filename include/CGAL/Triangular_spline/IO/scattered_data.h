@@ -5,6 +5,7 @@
 #define CGAL_TRIANGULAR_SPLINE_IO_SCATTERED_DATA_H
 
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/IO/text_tokens.h>
 #include <CGAL/Triangular_spline/Planar_domain.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
@@ -17,7 +18,6 @@
 #include <cstddef>
 #include <istream>
 #include <numeric>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,23 +41,6 @@ struct Scattered_data {
   /// height
   std::size_t merged_duplicates = 0;
 };
-
-namespace internal {
-
-// Splits `line` into whitespace-separated tokens after removing a `#` comment and a
-// carriage return (files written on Windows).
-inline std::vector<std::string> tokens_of_line(const std::string& line) {
-  std::string text = line.substr(0, line.find('#'));
-  if (!text.empty() && text.back() == '\r')
-    text.pop_back();
-  std::istringstream in(text);
-  std::vector<std::string> tokens;
-  for (std::string token; in >> token;)
-    tokens.push_back(token);
-  return tokens;
-}
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineIO

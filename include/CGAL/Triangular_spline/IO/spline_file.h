@@ -6,6 +6,7 @@
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/IO/text_tokens.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
 #include <CGAL/Triangular_spline/Planar_domain.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
@@ -64,16 +65,10 @@ public:
     std::string line;
     while (std::getline(m_input, line)) {
       ++m_line;
-      if (!line.empty() && line.back() == '\r')
-        line.pop_back();
-      const std::size_t first = line.find_first_not_of(" \t");
-      if (first == std::string::npos || line[first] == '#')
+      tokens = split_tokens(line);
+      if (tokens.empty() || tokens[0][0] == '#')
         continue;
-      std::istringstream in(line);
-      tokens.clear();
-      m_text = line.substr(first);
-      for (std::string token; in >> token;)
-        tokens.push_back(token);
+      m_text = line.substr(line.find_first_not_of(blank_characters));
       return true;
     }
     if (m_input.bad())
@@ -130,11 +125,30 @@ public:
   // A non-negative decimal integer no larger than `max`.
   std::size_t count(const std::string& token, const std::string& what, std::size_t max) const {
     if (token.empty() || token.find_first_not_of("0123456789") != std::string::npos)
-      fail("invalid " + what + " \"" + token + "\" (expected a non-negative integer)");
+      fail("invalid " + what + " " + internal::quoted(token) +
+           " (expected a non-negative integer)");
     // Twelve digits exceed every `max`; stoull cannot overflow below that.
     if (token.size() > 12 || static_cast<std::size_t>(std::stoull(token)) > max)
-      fail(what + " " + token + " is out of range (at most " + std::to_string(max) + ")");
+      fail(what + " " + internal::quoted(token) + " is out of range (at most " +
+           std::to_string(max) + ")");
     return static_cast<std::size_t>(std::stoull(token));
+  }
+
+  // Fails unless `count` lines of at least `line_bytes` bytes each fit in what is left of a
+  // seekable input, so that a corrupt count is reported at its line, not after reading on.
+  void check_fits(std::size_t count, std::size_t line_bytes, const std::string& what) {
+    const std::istream::pos_type here = m_input.tellg();
+    if (here == std::istream::pos_type(-1) || !m_input.seekg(0, std::ios::end)) {
+      m_input.clear(); // not seekable (or at its end): the read itself will fail
+      return;
+    }
+    const std::istream::pos_type end = m_input.tellg();
+    m_input.seekg(here);
+    const auto left = static_cast<std::size_t>(end - here);
+    if (count > left / line_bytes)
+      fail(what + " " + std::to_string(count) + " cannot fit in the " + std::to_string(left) +
+           " bytes left in the file (each needs a line of at least " + std::to_string(line_bytes) +
+           " bytes)");
   }
 
   template <class FT>
@@ -309,25 +323,28 @@ Spline_file<GeomTraits, Value> read_spline_file(std::istream& input, const std::
     reader.fail("not a tspline spline file (expected \"" +
                 std::string(internal::spline_file_magic) + " 1\", found " + reader.text() + ")");
   if (tokens[1] != std::to_string(internal::spline_file_version))
-    reader.fail("unsupported version " + tokens[1] + " (this reader supports version " +
-                std::to_string(internal::spline_file_version) + ")");
+    reader.fail("unsupported version " + internal::quoted(tokens[1]) +
+                " (this reader supports version " + std::to_string(internal::spline_file_version) +
+                ")");
 
   const int m = static_cast<int>(reader.count(reader.keyword_value("degree"), "degree", 100));
   const std::size_t values_per_patch = number_of_control_points(m);
   const std::string dimension_token = reader.keyword_value("dimension");
   if (dimension_token != "1" && dimension_token != "3")
-    reader.fail("invalid dimension \"" + dimension_token + "\" (expected 1 or 3)");
+    reader.fail("invalid dimension " + internal::quoted(dimension_token) + " (expected 1 or 3)");
   if (dimension_token != std::to_string(dimension))
     reader.fail("the file holds dimension " + dimension_token + " control values (" +
                 (dimension_token == "1" ? "functional" : "parametric") + ") but dimension " +
                 std::to_string(dimension) + " values were requested");
   const std::string number_type = reader.keyword_value("number_type");
   if (number_type != "exact" && number_type != "double")
-    reader.fail("invalid number_type \"" + number_type + "\" (expected exact or double)");
+    reader.fail("invalid number_type " + internal::quoted(number_type) +
+                " (expected exact or double)");
   const bool exact_file = number_type == "exact";
 
   const std::size_t max_index = Planar_domain<GeomTraits>::null_index - 1;
   const std::size_t N = reader.count(reader.keyword_value("vertices"), "vertex count", max_index);
+  reader.check_fits(N, 4, "vertex count"); // "x y\n"
   std::vector<Point_2> points;
   points.reserve((std::min)(N, internal::spline_file_reserve_limit));
   for (std::size_t v = 0; v < N; ++v) {
@@ -339,6 +356,9 @@ Spline_file<GeomTraits, Value> read_spline_file(std::istream& input, const std::
   }
 
   const std::size_t F = reader.count(reader.keyword_value("faces"), "face count", max_index);
+  const std::size_t numbers_per_line = values_per_patch * static_cast<std::size_t>(dimension);
+  // A face line "a b c\n" and a patch line of one-digit numbers and blanks.
+  reader.check_fits(F, 6 + 2 * numbers_per_line, "face count");
   std::vector<std::array<Index, 3>> faces;
   faces.reserve((std::min)(F, internal::spline_file_reserve_limit));
   for (std::size_t f = 0; f < F; ++f) {
@@ -356,7 +376,6 @@ Spline_file<GeomTraits, Value> read_spline_file(std::istream& input, const std::
   }
 
   reader.keyword("patches");
-  const std::size_t numbers_per_line = values_per_patch * static_cast<std::size_t>(dimension);
   std::vector<std::vector<Value>> nets;
   nets.reserve((std::min)(F, internal::spline_file_reserve_limit));
   for (std::size_t f = 0; f < F; ++f) {
@@ -410,12 +429,13 @@ inline int spline_file_dimension(std::istream& input) {
   std::string line;
   int dimension = 1;
   while (std::getline(input, line)) {
-    std::istringstream words(line.substr(0, line.find('#')));
-    std::string key, value;
-    if (words >> key >> value && key == "dimension") {
-      dimension = value == "3" ? 3 : 1;
+    const std::vector<std::string> words = internal::split_tokens(line.substr(0, line.find('#')));
+    if (words.size() == 2 && words[0] == "dimension") {
+      dimension = words[1] == "3" ? 3 : 1;
       break;
     }
+    if (!words.empty() && (words[0] == "vertices" || words[0] == "faces"))
+      break; // past the header
   }
   input.clear();
   input.seekg(0);

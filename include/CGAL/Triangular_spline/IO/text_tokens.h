@@ -1,0 +1,56 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_IO_TEXT_TOKENS_H
+#define CGAL_TRIANGULAR_SPLINE_IO_TEXT_TOKENS_H
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+namespace internal {
+
+// The characters that separate tokens in every text format the package reads: those of
+// std::isspace in the "C" locale but '\n', which std::getline() has already taken. Every
+// reader splits with split_tokens(), so that a line of blanks is empty for all of them (a
+// reader that tested fewer characters than its tokenizer skipped read a token that was not
+// there).
+constexpr const char* blank_characters = " \t\r\f\v";
+
+// The blank-separated tokens of `text`.
+inline std::vector<std::string> split_tokens(const std::string& text) {
+  std::vector<std::string> tokens;
+  std::size_t begin = text.find_first_not_of(blank_characters);
+  while (begin != std::string::npos) {
+    const std::size_t end = text.find_first_of(blank_characters, begin);
+    tokens.push_back(text.substr(begin, end == std::string::npos ? end : end - begin));
+    begin = end == std::string::npos ? end : text.find_first_not_of(blank_characters, end);
+  }
+  return tokens;
+}
+
+// The tokens of a line of a format where `#` starts a comment that runs to the end of the line.
+inline std::vector<std::string> tokens_of_line(const std::string& line) {
+  return split_tokens(line.substr(0, line.find('#')));
+}
+
+// Longest part of a token that error messages quote: a corrupt file may hold a token of
+// megabytes, and the message must stay one readable line.
+constexpr std::size_t max_quoted_length = 40;
+
+// `token` in double quotes for an error message; a long token is cut, marked with "..."
+// and followed by its length.
+inline std::string quoted(const std::string& token) {
+  if (token.size() <= max_quoted_length)
+    return "\"" + token + "\"";
+  return "\"" + token.substr(0, max_quoted_length) + "...\" (" + std::to_string(token.size()) +
+         " characters)";
+}
+
+} // namespace internal
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_IO_TEXT_TOKENS_H
