@@ -199,6 +199,26 @@ Json run(const C1_job& job, std::ostream& out) {
   report.set("degenerate_frames", job.fix == "perturb" ? original_frames.frames.size()
                                                        : spline.degenerate_frames().size());
   report.set("degenerate_frames_numerical", numerical_frames);
+  std::size_t thin_frames = 0;
+  for (const auto& f : spline.rerouted_frames())
+    thin_frames += f.thin ? 1 : 0;
+  report.set("thin_frames_rerouted", thin_frames);
+  report.set("propagation_weight_bound", Spline::propagation_weight_bound);
+  report.set("max_propagation_weight", spline.max_propagation_weight());
+  {
+    // Where the largest weights are: by the role of the computed point.
+    std::array<double, 5> by_kind{};
+    for (const auto& rule : spline.rules())
+      for (int i = 0; i < rule.size; ++i)
+        by_kind[std::size_t(spline.kind(rule.target))] =
+            (std::max)(by_kind[std::size_t(spline.kind(rule.target))],
+                       std::abs(CGAL::to_double(rule.weights[std::size_t(i)])));
+    Json kinds = Json::object();
+    const char* names[] = {"corner", "star", "edge_middle", "corner_inner", "flip"};
+    for (std::size_t k = 0; k < 5; ++k)
+      kinds.set(names[k], by_kind[k]);
+    report.set("max_propagation_weight_by_role", kinds);
+  }
   Json moved = Json::array();
   for (const auto& m : moves) {
     Json entry = Json::object();
@@ -272,7 +292,9 @@ Json run(const C1_job& job, std::ostream& out) {
         << (job.fix == "perturb"
                 ? " (fixed by moving " + std::to_string(moves.size()) + " vertices)"
                 : std::string(" (re-routed)"))
-        << ", singular vertices: " << spline.singular_vertices().size() << "\n"
+        << ", singular vertices: " << spline.singular_vertices().size()
+        << ", thin frames re-routed: " << thin_frames << "\n"
+        << "  largest propagation weight: " << spline.max_propagation_weight() << "\n"
         << "  free parameters: " << spline.number_of_free_parameters();
     if (morgan_scott)
       out << " (Morgan-Scott dimension " << *morgan_scott << ")";

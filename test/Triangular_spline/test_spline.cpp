@@ -8,6 +8,7 @@
 #include <CGAL/Triangular_spline/domain_from_face_graph.h>
 #include <CGAL/Triangular_spline/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Domain_locator.h>
+#include <CGAL/Triangular_spline/IO/number_parsing.h>
 #include <CGAL/Triangular_spline/Spline_space.h>
 #include <CGAL/Triangular_spline/certify.h>
 #include <CGAL/Triangular_spline/evaluate.h>
@@ -257,9 +258,23 @@ TEST(Spline, LocalEditsStayInTheRingAndKeepC1) {
       const std::vector<std::uint32_t> changed = spline.edit(s, random.rational<K::FT>());
       ASSERT_FALSE(changed.empty());
       EXPECT_EQ(changed.front(), s);
-      // The ring: faces incident to a vertex of the edited point's polar label.
+      // The ring: faces incident to a vertex of the edited point's polar label, or to a
+      // vertex reached from one through thin re-routed frames (their corner-inner points
+      // follow the edge point of the other end).
+      std::set<std::uint32_t> vertices;
+      for (const auto& [v, m] : spline.polar_label(s))
+        vertices.insert(v);
+      for (bool grown = true; grown;) {
+        grown = false;
+        for (const auto& frame : spline.rerouted_frames()) {
+          const auto& ends = domain.edge(frame.edge);
+          const auto other = ends[0] == frame.vertex ? ends[1] : ends[0];
+          if (frame.thin && vertices.count(other) && vertices.insert(frame.vertex).second)
+            grown = true;
+        }
+      }
       std::set<std::uint32_t> allowed;
-      for (const auto& [v, m] : spline.polar_label(s)) {
+      for (const auto v : vertices) {
         const auto [fb, fe] = domain.star_faces(v);
         for (auto f = fb; f != fe; ++f)
           for (const auto& index : TS::multi_indices(5))
@@ -728,4 +743,128 @@ TEST(LocalFit, RejectsBadArguments) {
                TS::Invalid_input);
   C1_quintic_spline<Epick> symmetric(domain, Corner_frame::Symmetric_stars);
   EXPECT_THROW(TS::fit_vertex_data(symmetric, z, Fit::Local_polynomial), TS::Invalid_input);
+}
+
+// ---- Stable propagation (issue 10: bounded weights at thin frames) ---------------------
+
+namespace {
+
+// An interior vertex r = (0, 0) with neighbours s = (1/2, 1), p_l = (-1, 0), q = (1/2, -1)
+// and p_r = (1, delta), inside a ring of eight boundary vertices. The edges r-s and r-q
+// both have apexes p_l and p_r: their frames at r are `delta` away from collinear
+// (exactly collinear for delta = 0).
+template <class K>
+Planar_domain<K> thin_frame_domain(const typename K::FT& delta) {
+  using FT = typename K::FT;
+  using P = typename K::Point_2;
+  std::vector<P> points{
+      P(0, 0),  P(FT(1) / FT(2), 1), P(-1, 0), P(FT(1) / FT(2), -1), P(1, delta), P(3, 3),
+      P(-3, 3), P(-3, -3),           P(3, -3)};
+  // r=0 s=1 pl=2 q=3 pr=4, outer square 5..8 (counter-clockwise from (3, 3)).
+  std::vector<std::array<Index, 3>> faces{{{0, 4, 1}}, {{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 4}},
+                                          {{1, 4, 5}}, {{1, 5, 6}}, {{1, 6, 2}}, {{2, 6, 7}},
+                                          {{2, 7, 3}}, {{3, 7, 8}}, {{3, 8, 4}}, {{4, 8, 5}}};
+  return Planar_domain<K>(points, faces);
+}
+
+} // namespace
+
+TEST(StablePropagation, ThinFramesAreReroutedWithBoundedWeights) {
+  // Frames 1e-2, 1e-4 and 1e-8 degrees from collinear, and exactly collinear: the regular
+  // rule's weights would be about 1/delta (6e3 .. 6e9, infinite); re-routed, every weight of
+  // the plan stays under the bound, the spline is exactly C^1 for random prescribed values,
+  // and the values stay at the scale of the prescribed ones.
+  using FT = Exact_kernel::FT;
+  for (const double degrees : {1e-2, 1e-4, 1e-8, 0.0}) {
+    const FT delta = FT(std::tan(degrees * 3.14159265358979 / 180));
+    const auto domain = thin_frame_domain<Exact_kernel>(delta);
+    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+    std::size_t rerouted_at_r = 0;
+    for (const auto& frame : spline.rerouted_frames()) {
+      if (frame.vertex != 0)
+        continue;
+      ++rerouted_at_r;
+      EXPECT_EQ(frame.thin, degrees != 0.0);
+      EXPECT_GT(frame.regular_weight, 1e3) << degrees;
+    }
+    EXPECT_EQ(rerouted_at_r, 2u) << degrees;
+    EXPECT_LE(spline.max_propagation_weight(),
+              C1_quintic_spline<Exact_kernel>::propagation_weight_bound)
+        << degrees;
+    Random_rationals random(13);
+    for (auto s : spline.free_slots())
+      spline.set_free_value(s, FT(random.integer(-100, 100)) / FT(100));
+    spline.propagate();
+    double largest = 0;
+    for (const FT& v : spline.values())
+      largest = (std::max)(largest, std::abs(CGAL::to_double(v)));
+    EXPECT_LT(largest, 1e3) << degrees;
+    EXPECT_TRUE(certify(spline).certified) << degrees;
+    // The free count (the dimension of the spline space) is unchanged by the re-routing.
+    EXPECT_EQ(spline.number_of_free_parameters(),
+              3 * domain.number_of_vertices() + 3 * domain.number_of_faces() +
+                  domain.number_of_interior_edges() + 3 * domain.number_of_boundary_edges());
+  }
+  // Double build of the 1e-8 degree frame: C^1 up to rounding, bounded weights.
+  const auto domain = thin_frame_domain<Epick>(std::tan(1e-8 * 3.14159265358979 / 180));
+  C1_quintic_spline<Epick> spline(domain, Corner_frame::Corner_and_two_stars);
+  EXPECT_LE(spline.max_propagation_weight(), C1_quintic_spline<Epick>::propagation_weight_bound);
+  Random_rationals random(13);
+  randomize(spline, random);
+  EXPECT_LT(certify(spline).max_residual, 1e-12 * 1e3);
+}
+
+TEST(StablePropagation, LocalFitOfSmoothDataStaysAccurateAtThinFrames) {
+  // A cubic sampled on the 1e-4 degree domain: still reproduced exactly (the re-routed
+  // points are combinations of the cubic's own polar values).
+  using FT = Exact_kernel::FT;
+  const auto domain = thin_frame_domain<Exact_kernel>(FT(1) / FT(573000));
+  Random_rationals random(3);
+  const auto cubic = random.polynomial<Exact_kernel>(3);
+  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(spline, sample(domain, cubic), Fit::Local_polynomial, 3);
+  EXPECT_FALSE(spline.rerouted_frames().empty());
+  EXPECT_TRUE(certify(spline).certified);
+  // 9 points determine a cubic only at some vertices: where every corner of a face did, the
+  // face is the cubic.
+  TS::Local_polynomials<Exact_kernel> local(domain, sample(domain, cubic), 3);
+  for (Index f = 0; f < domain.number_of_faces(); ++f) {
+    const auto& t = domain.face(f);
+    if (local.degree(t[0]) < 3 || local.degree(t[1]) < 3 || local.degree(t[2]) < 3)
+      continue;
+    const auto c = CGAL::centroid(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+    EXPECT_EQ(spline.patch(f).evaluate(c), cubic.evaluate(c)) << f;
+  }
+}
+
+TEST(StablePropagation, FourNearlyCollinearDecimalPointsDoNotCrash) {
+  // data/bad/near_collinear_four.xyz (issue 13, defect 2): both ends of the interior edge
+  // are collinear up to rounding in double; one is re-routed, the other keeps its rule, and
+  // the exact build certifies.
+  using FT = Exact_kernel::FT;
+  auto decimal = [](const char* text) { return TS::parse_number<FT>(text); };
+  std::vector<Exact_kernel::Point_2> points{{decimal("0.0"), decimal("0.0")},
+                                            {decimal("0.8"), decimal("0.4")},
+                                            {decimal("1.2"), decimal("0.5999999999999")},
+                                            {decimal("1.6"), decimal("0.8")}};
+  CGAL::Delaunay_triangulation_2<Exact_kernel> dt(points.begin(), points.end());
+  std::vector<CGAL::Delaunay_triangulation_2<Exact_kernel>::Vertex_handle> handles;
+  const auto domain = TS::domain_from_triangulation_2<Exact_kernel>(
+      dt, [](auto) { return true; }, handles);
+  C1_quintic_spline<Exact_kernel> exact(domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(exact, std::vector<FT>{0, 1, 2, 3}, Fit::Local_polynomial);
+  EXPECT_TRUE(certify(exact).certified);
+  std::vector<Epick::Point_2> fast_points;
+  for (const auto& p : points)
+    fast_points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+  CGAL::Delaunay_triangulation_2<Epick> fast_dt(fast_points.begin(), fast_points.end());
+  std::vector<CGAL::Delaunay_triangulation_2<Epick>::Vertex_handle> fast_handles;
+  const auto fast_domain = TS::domain_from_triangulation_2<Epick>(
+      fast_dt, [](auto) { return true; }, fast_handles);
+  for (Fit fit : {Fit::Local_polynomial, Fit::Tangent_planes, Fit::Interpolate}) {
+    C1_quintic_spline<Epick> fast(fast_domain, Corner_frame::Corner_and_two_stars);
+    EXPECT_NO_THROW(TS::fit_vertex_data(fast, std::vector<double>{0, 1, 2, 3}, fit));
+    for (double v : fast.values())
+      EXPECT_TRUE(std::isfinite(v));
+  }
 }

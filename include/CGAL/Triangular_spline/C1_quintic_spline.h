@@ -199,6 +199,10 @@ public:
   using Patch = Bezier_triangle<Geom_traits, Value>;
   /// a degenerate frame found in the domain
   using Degenerate_frame = Degenerate_frame_t<Index>;
+  /// the bound on the weights of the edge rules: an edge end whose regular rule (Xu's
+  /// condition 3.5 solved for its edge-middle point) would use a weight above it is
+  /// re-routed as a thin frame, where every weight is at most about 2
+  static constexpr double propagation_weight_bound = 16;
   /// an invalid slot index, marking an unused source of a `Rule`
   static constexpr Slot null_slot = (std::numeric_limits<Slot>::max)();
   /// the domain vertices and multiplicities of a control point's blossom argument (at most
@@ -317,8 +321,15 @@ public:
   std::size_t number_of_free_parameters() const { return m_free_slots.size(); }
   /// returns the rules in evaluation order
   const std::vector<Rule>& rules() const { return m_rules; }
-  /// returns the degenerate frames found in the domain (re-routed in the plan)
+  /// returns the degenerate frames found in the domain (`find_degenerate_frames()`)
   const std::vector<Degenerate_frame>& degenerate_frames() const { return m_degenerate.frames; }
+  /// returns the edge ends the plan re-routes: one per edge with a degenerate frame, and the
+  /// thin frames (`Degenerate_frame_t::thin`), whose regular rule would have weights above
+  /// `propagation_weight_bound`
+  const std::vector<Degenerate_frame>& rerouted_frames() const { return m_frames; }
+  /// returns the largest absolute coefficient of any rule: how much the propagation can
+  /// amplify a change of a prescribed point (1 for a value copied unchanged)
+  double max_propagation_weight() const { return m_max_weight; }
   /// returns the interior singular vertices (each adds one free parameter)
   const std::vector<Index>& singular_vertices() const { return m_degenerate.singular_vertices; }
   /// @}
@@ -512,26 +523,143 @@ private:
       if (best_quality >= acceptable)
         return best;
     }
-    // The corner and two stars: the best-shaped pair (a face always gives a valid one).
+    // The corner and two stars: the pair that extrapolates least, i.e. whose largest
+    // barycentric weight over the region is smallest (the propagation weights of the
+    // corner region); a face always gives a valid pair.
+    std::vector<std::array<double, 2>> offsets(d + 1);
+    const double vx = CGAL::to_double(point_of(0).x()), vy = CGAL::to_double(point_of(0).y());
+    for (std::size_t k = 1; k <= d; ++k)
+      offsets[k] = {{CGAL::to_double(point_of(k).x()) - vx, CGAL::to_double(point_of(k).y()) - vy}};
+    double best_cost = std::numeric_limits<double>::infinity();
+    auto consider_pair = [&](std::size_t i, std::size_t j) {
+      if (collinear(point_of(0), point_of(i), point_of(j)))
+        return;
+      // Weights of w in (v, w_i, w_j): solve [a b] (mu, nu) = w - v.
+      const auto &a = offsets[i], &b = offsets[j];
+      const double det = a[0] * b[1] - a[1] * b[0];
+      double cost = 1;
+      for (std::size_t k = 1; k <= d && cost < best_cost; ++k) {
+        const double mu = (offsets[k][0] * b[1] - offsets[k][1] * b[0]) / det;
+        const double nu = (a[0] * offsets[k][1] - a[1] * offsets[k][0]) / det;
+        cost = (std::max)({cost, std::abs(mu), std::abs(nu), std::abs(1 - mu - nu)});
+      }
+      if (!(cost >= best_cost)) { // NaN (det rounded to 0) never wins
+        best_cost = cost;
+        best = {{0, i, j}};
+      }
+    };
     const std::size_t stride = d <= 16 ? 1 : d / 16;
-    for (std::size_t i = 1; i <= d; i += stride)
-      for (std::size_t j = i + 1; j <= d; ++j)
-        consider({{0, i, j}});
     for (std::size_t i = 1; i < d; ++i) // consecutive neighbours span a face: always valid
-      consider({{0, i, i + 1}});
-    CGAL_assertion(best_quality > 0);
+      consider_pair(i, i + 1);
+    for (std::size_t i = 1; i <= d; i += stride)
+      for (std::size_t j = i + 2; j <= d; ++j)
+        consider_pair(i, j);
+    if (!std::isfinite(best_cost)) // every cost NaN in double: the best-shaped pair
+      for (std::size_t i = 1; i < d; ++i)
+        consider({{0, i, i + 1}});
+    CGAL_assertion(best[1] != best[2]);
     return best;
+  }
+
+  // How the edge-middle point next to end `vertex` of an interior edge is computed.
+  enum class End_route : unsigned char {
+    Regular,    // from the corner diamond at the end (the usual rule)
+    Degenerate, // apexes exactly collinear with the end (or up to rounding in double)
+    Thin        // not collinear, but the regular rule's weights exceed the bound
+  };
+  struct Edge_route {
+    Index end = Domain::null_index; // the re-routed end, or null_index
+    End_route kind = End_route::Regular;
+    double regular_weight = 0; // largest |weight| the regular rule at `end` would have
+    std::array<FT, 3> mu;      // end = mu0 apex_left + mu1 other end + mu2 apex_right
+  };
+
+  static double largest_abs(const std::array<FT, 3>& w) {
+    double m = 0;
+    for (const FT& x : w)
+      m = (std::max)(m, std::abs(CGAL::to_double(x)));
+    return m;
+  }
+
+  // Chooses, per interior edge, the end (if any) whose edge-middle point is re-routed
+  // through the middle diamond: exactly degenerate ends (and, in double, ends collinear up
+  // to rounding) always; otherwise the end whose regular weights exceed
+  // `propagation_weight_bound`, the larger one if both do. `allow_thin[v] == 0` forbids
+  // re-routing thin frames at v (used to break the rare dependency cycles).
+  std::vector<Edge_route> route_edges(const std::vector<char>& allow_thin) const {
+    const Index E = static_cast<Index>(m_domain.number_of_edges());
+    std::vector<Edge_route> routes(E);
+    std::vector<char> exact_end(2 * std::size_t(E), 0), numerical_end(2 * std::size_t(E), 0);
+    for (const auto& d : m_degenerate.frames) {
+      const int side = m_domain.edge(d.edge)[0] == d.vertex ? 0 : 1;
+      (d.numerical ? numerical_end : exact_end)[2 * std::size_t(d.edge) + std::size_t(side)] = 1;
+    }
+    for (Index e = 0; e < E; ++e) {
+      if (m_domain.is_boundary_edge(e))
+        continue;
+      const auto& ends = m_domain.edge(e);
+      const auto& ef = m_domain.edge_faces(e);
+      const Point_2& pl = m_domain.point(m_domain.opposite_vertex(ef[0], e));
+      const Point_2& pr = m_domain.point(m_domain.opposite_vertex(ef[1], e));
+      std::array<double, 2> weight{{0, 0}};
+      for (int side = 0; side < 2; ++side) {
+        const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
+        const Point_2& r = m_domain.point(ends[std::size_t(side)]);
+        const Point_2& other = m_domain.point(ends[std::size_t(1 - side)]);
+        weight[std::size_t(side)] = exact_end[k] ? std::numeric_limits<double>::infinity()
+                                                 : largest_abs(barycentric(other, pl, r, pr));
+        if (numerical_end[k]) // ranked after exact ends, before every thin one
+          weight[std::size_t(side)] = (std::numeric_limits<double>::max)();
+      }
+      const int side = weight[1] > weight[0] ? 1 : 0;
+      const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
+      const Index r = ends[std::size_t(side)];
+      Edge_route route;
+      if (exact_end[k] || numerical_end[k])
+        route.kind = End_route::Degenerate;
+      else if (weight[std::size_t(side)] > propagation_weight_bound && allow_thin[r])
+        route.kind = End_route::Thin;
+      else
+        continue;
+      route.end = r;
+      route.regular_weight = weight[std::size_t(side)];
+      route.mu =
+          barycentric(m_domain.point(r), pl, m_domain.point(ends[std::size_t(1 - side)]), pr);
+      routes[e] = route;
+    }
+    return routes;
   }
 
   void build_plan() {
     const Index V = static_cast<Index>(m_domain.number_of_vertices());
+    m_degenerate = find_degenerate_frames(m_domain);
+    std::vector<char> allow_thin(V, 1);
+    // A thin re-routing makes corner-inner points depend on an edge-middle point of the
+    // other end; chains of such ends could close a cycle. Then the thin re-routings at the
+    // vertices on the cycle are dropped and the plan rebuilt (exact degenerate ones never
+    // depend on edge points, so this ends).
+    for (;;) {
+      m_rules.clear();
+      m_free.assign(m_values.size(), 0);
+      m_free_slots.clear();
+      std::vector<Index> thin_vertex_of_rule;
+      build_plan_once(allow_thin, thin_vertex_of_rule);
+      if (order_rules(thin_vertex_of_rule, allow_thin))
+        break;
+    }
+    for (Slot s = 0; s < m_free.size(); ++s)
+      if (m_free[s])
+        m_free_slots.push_back(s);
+    m_max_weight = 0;
+    for (const Rule& r : m_rules)
+      m_max_weight = (std::max)(m_max_weight, largest_abs(r.weights));
+  }
+
+  void build_plan_once(const std::vector<char>& allow_thin,
+                       std::vector<Index>& thin_vertex_of_rule) {
+    const Index V = static_cast<Index>(m_domain.number_of_vertices());
     const Index E = static_cast<Index>(m_domain.number_of_edges());
     const Index F = static_cast<Index>(m_domain.number_of_faces());
-    m_degenerate = find_degenerate_frames(m_domain);
-    // degenerate_end[e]: the end of e whose frame is degenerate, or null_index.
-    std::vector<Index> degenerate_end(E, Domain::null_index);
-    for (const auto& d : m_degenerate.frames)
-      degenerate_end[d.edge] = d.vertex;
     m_rules.reserve(3 * std::size_t(V) + 4 * std::size_t(E));
 
     // 1. Corner regions (Lemma 3.3.2): every point of the region is the affine image of its
@@ -559,53 +687,148 @@ private:
                  barycentric(*region_points[k], a, b, c));
       }
     }
+    thin_vertex_of_rule.assign(m_rules.size(), Domain::null_index);
 
-    // 2. Corner-inner points at degenerate ends: the diamond at vertex r of edge (r, w)
-    // degenerates to star(r->w) = a CI_left + b CI_right with r = a p_left + b p_right.
-    // Around r the faces form a path or (singular vertex) a cycle of such links: the first
-    // corner-inner of each path is free, the others follow; in a cycle the last link is
-    // implied by the corner region and is skipped.
+    std::vector<Edge_route> routes = route_edges(allow_thin);
+    m_frames.clear();
+
+    // 2. Corner-inner points at re-routed ends. At vertex r of a re-routed edge (r, s) the
+    // corner diamond reads star = mu_l CI_l + mu_s EM_r + mu_r CI_r, with
+    // r = mu_l apex_l + mu_s s + mu_r apex_r (mu_s = 0 when the frame is degenerate): a link
+    // between the corner-inner points of the two faces. Around r the linked faces form paths
+    // (or, at a singular vertex, a cycle whose last link is implied and skipped). In each
+    // path one corner-inner point is free and the links are solved away from it; the free
+    // one is chosen so that the largest coefficient 1/mu of the solved links is smallest.
+    // A cycle closed by a thin link is not implied: its thinnest link goes back to the
+    // regular rule.
     std::vector<char> inner_dependent(F * std::size_t(3), 0);
+    struct Link {
+      Index edge;
+      std::size_t face_before, face_after; // positions in the star of r
+      FT mu_before, mu_after, mu_edge;     // star = mu_before CI_before + mu_edge EM + ...
+      bool with_edge_point;
+    };
+    std::vector<Link> path;
     for (Index r = 0; r < V; ++r) {
       const auto [fb, fe] = m_domain.star_faces(r);
       const auto [eb, ee] = m_domain.star_edges(r);
       const auto [nb, ne] = m_domain.neighbours(r);
       const std::size_t k = static_cast<std::size_t>(fe - fb);
       const bool boundary = m_domain.is_boundary_vertex(r);
-      // link[i]: the edge to neighbour i joins faces i-1 and i and is degenerate at r.
-      auto link = [&](std::size_t i) {
-        if (boundary && (i == 0 || i == k))
-          return false;
-        return degenerate_end[eb[i % k]] == r;
+      auto linked = [&](std::size_t i) {
+        return !(boundary && (i == 0 || i == k)) && routes[eb[i % k]].end == r;
       };
+      std::size_t links = 0;
+      for (std::size_t i = 0; i < k; ++i)
+        links += linked(i) ? 1 : 0;
+      if (links == 0)
+        continue;
+      if (!boundary && links == k) {
+        // A full cycle: implied only if every link is degenerate (a singular vertex).
+        std::size_t thinnest = k;
+        for (std::size_t i = 0; i < k; ++i) {
+          const Edge_route& route = routes[eb[i]];
+          if (route.kind == End_route::Thin &&
+              (thinnest == k || route.regular_weight < routes[eb[thinnest]].regular_weight))
+            thinnest = i;
+        }
+        if (thinnest != k)
+          routes[eb[thinnest]] = Edge_route();
+      }
+      // Start after an unlinked position, so that paths are not cut in two.
       std::size_t start = 0;
       if (!boundary) {
-        while (start < k && link(start))
+        while (start < k && linked(start))
           ++start;
         if (start == k)
-          start = 0; // a full cycle: singular vertex
+          start = 0; // singular vertex: link 0 is the implied one
       }
-      for (std::size_t step = 1; step < k; ++step) {
-        const std::size_t i = (start + step) % k; // face i, reached through edge i
-        if (!link(i))
-          continue;
-        const Index f_prev = fb[(i + k - 1) % k], f_cur = fb[i];
-        const Index e = eb[i];
-        const Point_2& p_prev = m_domain.point(nb[(i + k - 1) % k]);
-        const Point_2& p_cur = m_domain.point(nb[(i + 1) % (boundary ? k + 1 : k)]);
-        // r = (1-t) p_prev + t p_cur on the segment (t by projection, exact when r is on it;
-        // for a numerically degenerate frame the nearest point of the segment): solve
-        // star = (1-t) CI_prev + t CI_cur for CI_cur.
-        const Point_2& pr = m_domain.point(r);
-        const FT dx = p_cur.x() - p_prev.x(), dy = p_cur.y() - p_prev.y();
-        const FT t =
-            ((pr.x() - p_prev.x()) * dx + (pr.y() - p_prev.y()) * dy) / (dx * dx + dy * dy);
-        const FT a = FT(1) - t, b = t;
-        add_rule(corner_inner_slot(f_cur, r),
-                 {{star_slot(e, r), corner_inner_slot(f_prev, r), null_slot}},
-                 {{FT(1) / b, -a / b, FT(0)}}, 2);
-        inner_dependent[3 * std::size_t(f_cur) + std::size_t(position_in_face(f_cur, r))] = 1;
+      auto make_link = [&](std::size_t i) {
+        const Index e = eb[i % k];
+        const Edge_route& route = routes[e];
+        const std::size_t before = (i + k - 1) % k, after = i % k;
+        const Point_2& p_before = m_domain.point(nb[(i + k - 1) % k]);
+        const Point_2& p_after = m_domain.point(nb[(i + 1) % (boundary ? k + 1 : k)]);
+        Link link{e, before, after, FT(0), FT(0), FT(0), false};
+        if (route.kind == End_route::Degenerate) {
+          // r = (1-t) p_before + t p_after (t by projection: exact when r is on the segment,
+          // the nearest point of the segment for a frame collinear up to rounding)
+          const Point_2& pr = m_domain.point(r);
+          const FT dx = p_after.x() - p_before.x(), dy = p_after.y() - p_before.y();
+          const FT t =
+              ((pr.x() - p_before.x()) * dx + (pr.y() - p_before.y()) * dy) / (dx * dx + dy * dy);
+          link.mu_before = FT(1) - t;
+          link.mu_after = t;
+        } else {
+          const auto& ef = m_domain.edge_faces(e);
+          const bool left_before = ef[0] == fb[before];
+          link.mu_before = left_before ? route.mu[0] : route.mu[2];
+          link.mu_after = left_before ? route.mu[2] : route.mu[0];
+          link.mu_edge = route.mu[1];
+          link.with_edge_point = true;
+        }
+        return link;
+      };
+      auto emit_path = [&]() {
+        if (path.empty())
+          return;
+        // Root position rho in 0..L: links j < rho are solved for their face before, the
+        // others for their face after.
+        const std::size_t L = path.size();
+        auto cost = [](const FT& solved, const FT& other, const FT& edge) {
+          const double d = std::abs(CGAL::to_double(solved));
+          if (CGAL::is_zero(solved))
+            return std::numeric_limits<double>::infinity();
+          return (std::max)(
+              {1 / d, std::abs(CGAL::to_double(other)) / d, std::abs(CGAL::to_double(edge)) / d});
+        };
+        std::size_t best_root = 0;
+        double best_cost = std::numeric_limits<double>::infinity();
+        for (std::size_t rho = 0; rho <= L; ++rho) {
+          double worst = 0;
+          for (std::size_t j = 0; j < L; ++j)
+            worst = (std::max)(
+                worst, j < rho ? cost(path[j].mu_before, path[j].mu_after, path[j].mu_edge)
+                               : cost(path[j].mu_after, path[j].mu_before, path[j].mu_edge));
+          if (worst < best_cost) {
+            best_cost = worst;
+            best_root = rho;
+          }
+        }
+        auto emit = [&](const Link& link, bool solve_before) {
+          const std::size_t solved = solve_before ? link.face_before : link.face_after;
+          const std::size_t other = solve_before ? link.face_after : link.face_before;
+          const FT& mu_solved = solve_before ? link.mu_before : link.mu_after;
+          const FT& mu_other = solve_before ? link.mu_after : link.mu_before;
+          const Slot star = star_slot(link.edge, r);
+          const Slot ci_other = corner_inner_slot(fb[other], r);
+          if (link.with_edge_point)
+            add_rule(corner_inner_slot(fb[solved], r),
+                     {{star, ci_other, edge_middle_slot(link.edge, r)}},
+                     {{FT(1) / mu_solved, -mu_other / mu_solved, -link.mu_edge / mu_solved}});
+          else
+            add_rule(corner_inner_slot(fb[solved], r), {{star, ci_other, null_slot}},
+                     {{FT(1) / mu_solved, -mu_other / mu_solved, FT(0)}}, 2);
+          thin_vertex_of_rule.push_back(link.with_edge_point ? r : Domain::null_index);
+          inner_dependent[3 * std::size_t(fb[solved]) +
+                          std::size_t(position_in_face(fb[solved], r))] = 1;
+        };
+        // Away from the root: backwards from rho - 1, forwards from rho.
+        for (std::size_t j = best_root; j-- > 0;)
+          emit(path[j], true);
+        for (std::size_t j = best_root; j < L; ++j)
+          emit(path[j], false);
+        path.clear();
+      };
+      for (std::size_t step = 1; step < k + (boundary ? 0 : 1); ++step) {
+        const std::size_t i = (start + step) % k; // the link between faces i-1 and i
+        const bool skip = !boundary && step == k; // back at start: not a link by choice
+        if (!skip && linked(i) && !(boundary && i == 0))
+          path.push_back(make_link(i));
+        else
+          emit_path();
       }
+      emit_path();
     }
     for (Index f = 0; f < F; ++f)
       for (int i = 0; i < 3; ++i)
@@ -629,61 +852,115 @@ private:
       const Point_2& pr = m_domain.point(m_domain.opposite_vertex(ef[1], e));
       for (int side = 0; side < 2; ++side) {
         const Index r = ends[std::size_t(side)], s = ends[std::size_t(1 - side)];
-        if (degenerate_end[e] == r)
+        if (routes[e].end == r)
           continue;
         add_rule(edge_middle_slot(e, r),
                  {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
                  barycentric(m_domain.point(s), pl, m_domain.point(r), pr));
+        thin_vertex_of_rule.push_back(Domain::null_index);
       }
     }
 
-    // 4. Re-routed ends: the edge-middle point next to a degenerate end r comes from the
+    // 4. Re-routed ends: the edge-middle point next to a re-routed end r comes from the
     // middle diamond (flip_left, edge-middle near r, edge-middle near s, flip_right), an
-    // image of (p_left, r, s, p_right); p_left, s, p_right are never collinear there.
-    for (const auto& d : m_degenerate.frames) {
-      const Index e = d.edge, r = d.vertex;
+    // image of (p_left, r, s, p_right): EM_r = mu_l flip_l + mu_s EM_s + mu_r flip_r, with
+    // the weights of the corner diamond's link (at most about 1 where the regular rule's are
+    // large).
+    for (Index e = 0; e < E; ++e) {
+      const Edge_route& route = routes[e];
+      if (route.end == Domain::null_index)
+        continue;
+      const Index r = route.end;
       const auto& ends = m_domain.edge(e);
       const Index s = ends[0] == r ? ends[1] : ends[0];
       const auto& ef = m_domain.edge_faces(e);
       m_free[flip_slot(ef[0], e)] = m_free[flip_slot(ef[1], e)] = 1;
       add_rule(edge_middle_slot(e, r),
-               {{flip_slot(ef[0], e), edge_middle_slot(e, s), flip_slot(ef[1], e)}},
-               barycentric(m_domain.point(r), m_domain.point(d.apex_left), m_domain.point(s),
-                           m_domain.point(d.apex_right)));
+               {{flip_slot(ef[0], e), edge_middle_slot(e, s), flip_slot(ef[1], e)}}, route.mu);
+      thin_vertex_of_rule.push_back(Domain::null_index);
+      Degenerate_frame frame{e, r, m_domain.opposite_vertex(ef[0], e),
+                             m_domain.opposite_vertex(ef[1], e), false};
+      frame.numerical = route.kind == End_route::Degenerate && !std::isinf(route.regular_weight);
+      frame.thin = route.kind == End_route::Thin;
+      frame.regular_weight = route.regular_weight;
+      m_frames.push_back(frame);
     }
 
     // 5. The second flip point of every regular interior edge: one flip point is the image
-    // of its apex in the frame (other flip, edge-middle near lo, edge-middle near hi). The
-    // weight of the prescribed flip is the ratio of the apexes' distances to the edge, so the
-    // flip on the side of the farther apex is prescribed: that weight is then at most 1.
-    auto orientation_area = [&](Index a, Index b, Index c) {
-      const Point_2 &pa = m_domain.point(a), &pb = m_domain.point(b), &pc = m_domain.point(c);
-      return CGAL::abs((pb.x() - pa.x()) * (pc.y() - pa.y()) -
-                       (pb.y() - pa.y()) * (pc.x() - pa.x()));
-    };
+    // of its apex in the frame (other flip, edge-middle near lo, edge-middle near hi). Of the
+    // two choices the one with the smaller largest weight is taken (Xu prescribes the flip
+    // of the farther apex, which bounds the flip's own weight by 1 but not the edge points'
+    // weights, which grow where the quadrilateral is far from convex).
     for (Index e = 0; e < E; ++e) {
-      if (m_domain.is_boundary_edge(e) || degenerate_end[e] != Domain::null_index)
+      if (m_domain.is_boundary_edge(e) || routes[e].end != Domain::null_index)
         continue;
       const auto& ends = m_domain.edge(e);
       const auto& ef = m_domain.edge_faces(e);
-      const Index apex_left = m_domain.opposite_vertex(ef[0], e);
-      const Index apex_right = m_domain.opposite_vertex(ef[1], e);
-      const bool left_free = !(orientation_area(ends[0], ends[1], apex_right) >
-                               orientation_area(ends[0], ends[1], apex_left));
+      const Point_2& apex_left = m_domain.point(m_domain.opposite_vertex(ef[0], e));
+      const Point_2& apex_right = m_domain.point(m_domain.opposite_vertex(ef[1], e));
+      const Point_2 &lo = m_domain.point(ends[0]), &hi = m_domain.point(ends[1]);
+      const std::array<FT, 3> right_from_left = barycentric(apex_right, apex_left, lo, hi);
+      const std::array<FT, 3> left_from_right = barycentric(apex_left, apex_right, lo, hi);
+      const bool left_free = !(largest_abs(left_from_right) < largest_abs(right_from_left));
       const Index free_face = left_free ? ef[0] : ef[1], other_face = left_free ? ef[1] : ef[0];
-      const Index free_apex = left_free ? apex_left : apex_right;
-      const Index other_apex = left_free ? apex_right : apex_left;
       m_free[flip_slot(free_face, e)] = 1;
       add_rule(
           flip_slot(other_face, e),
           {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
-          barycentric(m_domain.point(other_apex), m_domain.point(free_apex),
-                      m_domain.point(ends[0]), m_domain.point(ends[1])));
+          left_free ? right_from_left : left_from_right);
+      thin_vertex_of_rule.push_back(Domain::null_index);
     }
+  }
 
-    for (Slot s = 0; s < m_free.size(); ++s)
-      if (m_free[s])
-        m_free_slots.push_back(s);
+  // Puts the rules in an order in which every source is computed before it is read
+  // (depth-first, keeping the emission order where it already is one). Returns false on a
+  // dependency cycle, after forbidding thin re-routings at the vertices whose rules are on it.
+  bool order_rules(const std::vector<Index>& thin_vertex_of_rule, std::vector<char>& allow_thin) {
+    const std::size_t R = m_rules.size();
+    constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+    std::vector<std::uint32_t> rule_of(m_values.size(), none);
+    for (std::size_t i = 0; i < R; ++i)
+      rule_of[m_rules[i].target] = static_cast<std::uint32_t>(i);
+    std::vector<unsigned char> state(R, 0); // 0 new, 1 on the stack, 2 done
+    std::vector<std::uint32_t> order;
+    order.reserve(R);
+    std::vector<std::pair<std::uint32_t, int>> stack; // rule, next source to visit
+    bool cycle = false;
+    for (std::size_t root = 0; root < R; ++root) {
+      if (state[root])
+        continue;
+      stack.push_back({static_cast<std::uint32_t>(root), 0});
+      state[root] = 1;
+      while (!stack.empty()) {
+        auto& [rule, next] = stack.back();
+        if (next < m_rules[rule].size) {
+          const std::uint32_t source = rule_of[m_rules[rule].sources[std::size_t(next++)]];
+          if (source == none || state[source] == 2)
+            continue;
+          if (state[source] == 1) {
+            cycle = true;
+            for (const auto& [on_stack, unused] : stack)
+              if (thin_vertex_of_rule[on_stack] != Domain::null_index)
+                allow_thin[thin_vertex_of_rule[on_stack]] = 0;
+            continue;
+          }
+          state[source] = 1;
+          stack.push_back({source, 0});
+          continue;
+        }
+        state[rule] = 2;
+        order.push_back(rule);
+        stack.pop_back();
+      }
+    }
+    if (cycle)
+      return false;
+    std::vector<Rule> ordered;
+    ordered.reserve(R);
+    for (std::uint32_t i : order)
+      ordered.push_back(m_rules[i]);
+    m_rules = std::move(ordered);
+    return true;
   }
 
   // Reverse dependencies (slot -> rules reading it), built on the first local edit: a
@@ -710,6 +987,8 @@ private:
   std::vector<Slot> m_free_slots;
   std::vector<Rule> m_rules;
   Degenerate_frame_analysis<Index> m_degenerate;
+  std::vector<Degenerate_frame> m_frames;
+  double m_max_weight = 0;
   std::vector<std::size_t> m_dependent_offsets;
   std::vector<std::uint32_t> m_dependents;
   std::vector<char> m_queued;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
@@ -36,6 +37,12 @@ struct Degenerate_frame_t {
   /// `false`: exactly collinear; `true`: collinear only up to double rounding (inexact
   /// kernels only, see `find_degenerate_frames()`)
   bool numerical = false;
+  /// `true`: not collinear, but re-routed by `C1_quintic_spline` because the regular rule's
+  /// weights would exceed its `propagation_weight_bound` (never set by
+  /// `find_degenerate_frames()`)
+  bool thin = false;
+  /// the largest absolute weight of the regular rule at this end (infinite if collinear)
+  double regular_weight = std::numeric_limits<double>::infinity();
 };
 
 /*!
