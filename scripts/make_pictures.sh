@@ -24,10 +24,17 @@ mkdir -p "$fig"
 for mode in shaded curvature isophotes net; do
   cp "$work/demo_$mode.png" "$fig/tour_$mode.png"
 done
-# The curvature of the demo surface seen from above, with a fixed colour range: where the
-# approximate fit concentrates curvature near the data points.
+# The curvature of the demo surface seen from above, with a fixed colour range.
 "$tspline" render --input "$work/demo.spline" --out "$fig/tour_curvature_top.png" \
   --mode curvature --view 0,90 --size 600x450 --range 4 >/dev/null
+
+# Curvature of exp(x) sin(2y) (negative everywhere, -1 <= K < 0) from 1000 scattered
+# points: the default local polynomial fit, and the tangent-plane fit it replaced.
+for fit in local tangent; do
+  "$tspline" c1 --input data/expsin_1000.xyz --fit "$fit" --save "$work/expsin_$fit.spline" >/dev/null
+  "$tspline" render --input "$work/expsin_$fit.spline" --out "$fig/expsin_curvature_$fit.png" \
+    --mode curvature --view 0,90 --size 400x300 --range 1 >/dev/null
+done
 
 # One figure for each of Mann's and Fang's sections of the manual.
 "$tspline" mann --input data/franke_100.xyz --mesh "$work/mann.ply" >/dev/null

@@ -38,17 +38,27 @@ int main(int argc, char* argv[]) {
       TS::read_xyz<Kernel>(input, argc > 1 ? argv[1] : "embedded");
   auto [domain, heights] = TS::delaunay_domain(data);
 
-  // The plan: free control points and propagation rules; degenerate frames are re-routed.
+  // The plan: free control points and propagation rules; degenerate frames (and thin ones,
+  // whose weights would exceed the bound) are re-routed.
   Spline spline(std::move(domain), TS::Corner_frame::Corner_and_two_stars);
   std::cout << spline.domain().number_of_faces() << " triangles, "
             << spline.degenerate_frames().size() << " degenerate frames, "
+            << spline.rerouted_frames().size() << " re-routed edge ends, "
             << spline.singular_vertices().size() << " singular vertices, "
-            << spline.number_of_free_parameters()
-            << " free control points (dim S^1_5 = " << TS::exact_spline_dimension(spline.domain())
-            << ")\n";
+            << spline.number_of_free_parameters() << " free control points";
+  // The exact rank costs O(n^3) in rationals: only for small domains.
+  if (spline.domain().number_of_vertices() <= 30)
+    std::cout << " (dim S^1_5 = " << TS::exact_spline_dimension(spline.domain()) << ")";
+  std::cout << ", largest propagation weight " << spline.max_propagation_weight() << "\n";
 
-  // Corners through the data, the other free points from the polar blend; propagate.
-  TS::fit_vertex_data(spline, heights, TS::Fit::Interpolate);
+  // The default fit of tspline c1: corners through the data, every other free point from
+  // the local polynomial (degree up to 5, chosen by cross-validation) of its nearest
+  // vertex; propagate.
+  const TS::Fit_statistics fit = TS::fit_vertex_data(spline, heights, TS::Fit::Local_polynomial, 5);
+  std::cout << "local polynomial degrees 0..5 at";
+  for (std::size_t count : fit.vertices_by_degree)
+    std::cout << " " << count;
+  std::cout << " vertices\n";
 
   auto patch = [&](std::uint32_t f) { return spline.patch(f); };
   TS::C1_certificate certificate = TS::certify_C1(spline.domain(), patch);

@@ -27,6 +27,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 namespace tspline {
@@ -166,6 +167,35 @@ Json run(const C1_job& job, std::ostream& out) {
     timings.set("dimension_exact", clock.lap());
   }
 
+  // Honesty about the surface: does it go through the data, and does it stay in the data's
+  // range? The sampled range (vertices and face centroids) is a lower bound of the surface's
+  // range, the control values' range an upper bound (convex hull property).
+  double interpolation_error = 0, data_min = HUGE_VAL, data_max = -HUGE_VAL;
+  for (std::uint32_t v = 0; v < d.number_of_vertices(); ++v) {
+    const double z = CGAL::to_double(input.values[v]);
+    data_min = (std::min)(data_min, z);
+    data_max = (std::max)(data_max, z);
+    interpolation_error = (std::max)(
+        interpolation_error, std::abs(CGAL::to_double(spline.value(spline.vertex_slot(v))) - z));
+  }
+  double sampled_min = data_min, sampled_max = data_max;
+  for (std::uint32_t f = 0; f < d.number_of_faces(); ++f) {
+    const auto& t = d.face(f);
+    const double z = CGAL::to_double(
+        spline.patch(f).evaluate(CGAL::centroid(d.point(t[0]), d.point(t[1]), d.point(t[2]))));
+    sampled_min = (std::min)(sampled_min, z);
+    sampled_max = (std::max)(sampled_max, z);
+  }
+  double control_min = HUGE_VAL, control_max = -HUGE_VAL;
+  for (const auto& value : spline.values()) {
+    control_min = (std::min)(control_min, CGAL::to_double(value));
+    control_max = (std::max)(control_max, CGAL::to_double(value));
+  }
+  const double data_span = data_max - data_min;
+  const double overshoot = (std::max)(sampled_max - data_max, data_min - sampled_min);
+  const bool overshoots = overshoot > 0.1 * data_span;
+  timings.set("range_checks", clock.lap());
+
   std::size_t numerical_frames = 0;
   for (const auto& f : spline.degenerate_frames())
     numerical_frames += f.numerical ? 1 : 0;
@@ -199,6 +229,17 @@ Json run(const C1_job& job, std::ostream& out) {
   report.set("degenerate_frames", job.fix == "perturb" ? original_frames.frames.size()
                                                        : spline.degenerate_frames().size());
   report.set("degenerate_frames_numerical", numerical_frames);
+  report.set("max_interpolation_error", interpolation_error);
+  auto range = [](double lo, double hi) {
+    Json a = Json::array();
+    a.push_back(lo);
+    a.push_back(hi);
+    return a;
+  };
+  report.set("data_range", range(data_min, data_max));
+  report.set("surface_range_sampled", range(sampled_min, sampled_max));
+  report.set("control_value_range", range(control_min, control_max));
+  report.set("overshoot_warning", overshoots);
   std::size_t thin_frames = 0;
   for (const auto& f : spline.rerouted_frames())
     thin_frames += f.thin ? 1 : 0;
@@ -301,11 +342,17 @@ Json run(const C1_job& job, std::ostream& out) {
     if (rank_dimension)
       out << " (exact rank dimension " << *rank_dimension << ")";
     out << "\n  fit: " << job.fit << ", arithmetic: " << (job.exact ? "exact rationals" : "double")
-        << "\n"
+        << ", largest interpolation error: " << interpolation_error << "\n"
+        << "  data range [" << data_min << ", " << data_max << "], surface range (sampled) ["
+        << sampled_min << ", " << sampled_max << "]\n"
         << "  " << certificate.summary();
     if (!certificate.exact)
       out << "  (double build: use --exact for an exact proof of C^1)\n";
   }
+  if (overshoots)
+    std::cerr << "tspline c1: warning: the surface leaves the data range [" << data_min << ", "
+              << data_max << "] by " << overshoot << " (more than 10% of its span) at sampled "
+              << "points; a lower --degree or --fit tangent overshoots less\n";
   if (!job.report.empty()) {
     std::ofstream file = open_output(job.report);
     report.write(file);
