@@ -740,6 +740,12 @@ TYPED_TEST(Output, OutsideModesUseTheNearestBoundaryPoint) {
     linear.value = extrapolated;
     linear.hessian = {{FT(0), FT(0), FT(0)}};
     EXPECT_TRUE(same_jet(*l, linear, exact, 1e7));
+    // values only: the extrapolation still uses the gradient
+    const auto l0 =
+        TS::evaluate_jets(ring, locator, source(patches), {p}, TS::Outside::Linear, 0).front();
+    ASSERT_TRUE(l0.has_value());
+    EXPECT_TRUE(same_value(l0->value, extrapolated, exact, 1e-8, 1e7));
+    EXPECT_EQ(l0->gradient[0], FT(0));
   }
   // the ring search agrees with a scan of every boundary edge
   for (int trial = 0; trial < 300; ++trial) {

@@ -12,6 +12,7 @@
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <optional>
@@ -269,16 +270,17 @@ auto evaluate_jets(const Planar_domain<GeomTraits>& domain,
   using Value = typename Patch::Value_type;
   using FT = typename GeomTraits::FT;
   std::vector<std::optional<Point_jet<Value>>> jets(queries.size());
-  const auto jet_at = [&](const typename Domain_locator<GeomTraits>::Location& location) {
+  const auto jet_at = [&](const typename Domain_locator<GeomTraits>::Location& location,
+                          int jet_order) {
     // binds to the source's reference, or extends the life of the returned patch
     const Patch& bezier = patch(location.face);
     const internal::Face_to_patch<GeomTraits, Value> frame(domain, location.face, bezier);
-    return frame.jet(location.barycentric, order);
+    return frame.jet(location.barycentric, jet_order);
   };
   for (std::size_t q = 0; q < queries.size(); ++q) {
     const auto& p = queries[q];
     if (const auto location = locator.locate_snapped(p)) {
-      jets[q] = jet_at(*location);
+      jets[q] = jet_at(*location, order);
       continue;
     }
     if (outside == Outside::No_value)
@@ -286,13 +288,17 @@ auto evaluate_jets(const Planar_domain<GeomTraits>& domain,
     const auto nearest = locator.nearest_boundary_point(p);
     if (!nearest)
       continue;
-    Point_jet<Value> jet = jet_at(nearest->location);
+    // the extrapolated value needs the gradient even when only values are asked for
+    Point_jet<Value> jet =
+        jet_at(nearest->location, outside == Outside::Linear ? (std::max)(order, 1) : order);
     if (outside == Outside::Linear) {
       const FT dx = p.x() - nearest->point.x(), dy = p.y() - nearest->point.y();
       Value value = jet.value + dx * jet.gradient[0] + dy * jet.gradient[1];
       jet.value = std::move(value);
       const Value zero = Value_traits<Value>::zero();
       jet.hessian = {{zero, zero, zero}};
+      if (order < 1)
+        jet.gradient = {{zero, zero}};
     }
     jets[q] = std::move(jet);
   }
