@@ -212,10 +212,11 @@ public:
             consider_edge(g.entries[k], p, best);
         }
       }
-      // Cells of ring r + 1 are at least r cells away from p'; the slack covers rounding.
+      // Cells of ring r + 1 are at least r cells away from p'. The slack covers the rounding
+      // of the double bound (relative 1e-15), small enough that far queries still stop early.
       if (best) {
         const double bound = double(r) * cell;
-        if (CGAL::to_double(best->squared_distance) * (1 + 1e-6) <= bound * bound + outside2)
+        if (CGAL::to_double(best->squared_distance) * (1 + 1e-9) <= bound * bound + outside2)
           break;
       }
     }
