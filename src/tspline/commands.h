@@ -23,6 +23,7 @@ int run_adjust(const std::vector<std::string>& args);
 int run_mann(const std::vector<std::string>& args);
 int run_blend(const std::vector<std::string>& args);
 int run_render(const std::vector<std::string>& args);
+int run_eval(const std::vector<std::string>& args);
 
 // The one-line summary of a subcommand from the dispatch table (empty if unknown).
 std::string_view command_summary(std::string_view name);

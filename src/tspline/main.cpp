@@ -34,6 +34,8 @@ const Command commands[] = {
     {"mann", "C^1 interpolant with polynomial precision (Mann)", tspline::run_mann},
     {"blend", "generalized blending mesh interpolation (Fang)", tspline::run_blend},
     {"render", "PNG pictures and coloured meshes of a surface", tspline::run_render},
+    {"eval", "values, gradients and Hessians of a saved spline at points or on a grid",
+     tspline::run_eval},
 };
 
 const Command* find_command(std::string_view name) {

@@ -8,9 +8,11 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangular_spline/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Domain_locator.h>
 #include <CGAL/Triangular_spline/Planar_domain.h>
 #include <CGAL/Triangular_spline/evaluate.h>
+#include <CGAL/Triangular_spline/shape.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -502,6 +504,264 @@ TYPED_TEST(Output, EvaluateAtParametricPatches) {
     EXPECT_TRUE(same_value(*values[q], expected, exact, 1e-9, 1e3));
   }
   EXPECT_FALSE(values.back().has_value());
+}
+
+// ---------------------------------------------------------------------------------------
+// Jets (value, gradient, Hessian), snapping to hull edges, outside modes
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+// The jet of a polynomial: its derivatives as polynomials, evaluated at p.
+template <class K, class Value>
+TS::Point_jet<Value> polynomial_jet(const Polynomial_surface<K, Value>& polynomial,
+                                    const typename K::Point_2& p) {
+  return {polynomial.evaluate(p),
+          {{polynomial.derivative(1, 0).evaluate(p), polynomial.derivative(0, 1).evaluate(p)}},
+          {{polynomial.derivative(2, 0).evaluate(p), polynomial.derivative(1, 1).evaluate(p),
+            polynomial.derivative(0, 2).evaluate(p)}}};
+}
+
+// Exact: identical members; double: relative tolerance. `order` limits what is compared.
+template <class Value>
+::testing::AssertionResult same_jet(const TS::Point_jet<Value>& a, const TS::Point_jet<Value>& b,
+                                    bool exact, double scale, int order = 2) {
+  std::vector<std::pair<const Value*, const Value*>> members{{&a.value, &b.value}};
+  if (order >= 1)
+    for (std::size_t i = 0; i < 2; ++i)
+      members.emplace_back(&a.gradient[i], &b.gradient[i]);
+  if (order >= 2)
+    for (std::size_t i = 0; i < 3; ++i)
+      members.emplace_back(&a.hessian[i], &b.hessian[i]);
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    ::testing::AssertionResult r =
+        same_value(*members[m].first, *members[m].second, exact, 1e-8, scale);
+    if (!r)
+      return r << " in member " << m << " (value, zx, zy, zxx, zxy, zyy)";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// A point at distance `relative` * |ab| outside the boundary edge e (the outer normal side),
+// above the point of the edge with parameter 1/3.
+template <class K>
+std::pair<typename K::Point_2, typename K::Point_2>
+point_outside_edge(const Planar_domain<K>& domain, Index e, const typename K::FT& relative) {
+  using FT = typename K::FT;
+  const auto& ends = domain.edge(e);
+  const auto& a = domain.point(ends[0]);
+  const auto& b = domain.point(ends[1]);
+  const auto& faces = domain.edge_faces(e);
+  const Index f = faces[0] != Planar_domain<K>::null_index ? faces[0] : faces[1];
+  const auto& c = domain.point(domain.opposite_vertex(f, e));
+  const FT third = FT(1) / FT(3);
+  const typename K::Point_2 on = a + (b - a) * third;
+  typename K::Vector_2 normal(b.y() - a.y(), a.x() - b.x()); // |normal| = |ab|
+  if ((c - on) * normal > FT(0))
+    normal = -normal;
+  return {on + normal * relative, on};
+}
+
+} // namespace
+
+TYPED_TEST(Output, JetsReproduceThePolynomialDerivatives) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  using Point_2 = typename K::Point_2;
+  constexpr bool exact = is_exact<K>;
+  Delaunay<K> dt;
+  Random_rationals random(31);
+  const Polynomial_surface<K> polynomial = random.polynomial<K>(5);
+  for (const auto& [name, domain] : test_domains<K>(dt)) {
+    SCOPED_TRACE(name);
+    const Domain_locator<K> locator(domain);
+    // vertex orders vary and every seventh patch is over a larger triangle
+    const auto patches = patches_of(domain, polynomial);
+    std::vector<Point_2> queries(domain.points());
+    for (Index f = 0; f < domain.number_of_faces(); ++f)
+      for (int trial = 0; trial < 3; ++trial)
+        queries.push_back(random_point_in(domain, f, random));
+    for (int order = 0; order <= 2; ++order) {
+      const auto jets = TS::evaluate_jets(domain, locator, source(patches), queries,
+                                          TS::Outside::No_value, order);
+      ASSERT_EQ(jets.size(), queries.size());
+      for (std::size_t q = 0; q < queries.size(); ++q) {
+        ASSERT_TRUE(jets[q].has_value()) << queries[q];
+        const TS::Point_jet<FT> expected = polynomial_jet(polynomial, queries[q]);
+        EXPECT_TRUE(same_jet(*jets[q], expected, exact, 1e3, order)) << queries[q];
+        // derivatives above `order` are zero
+        if (order < 2) {
+          EXPECT_EQ(jets[q]->hessian[1], FT(0));
+        }
+        if (order < 1) {
+          EXPECT_EQ(jets[q]->gradient[0], FT(0));
+        }
+      }
+    }
+    EXPECT_TRUE(same_jet(*TS::evaluate_jet(domain, locator, source(patches), queries.back()),
+                         polynomial_jet(polynomial, queries.back()), exact, 1e3));
+    EXPECT_FALSE(TS::evaluate_jet(domain, locator, source(patches), Point_2(-50, 7)).has_value());
+  }
+}
+
+TEST(Jets, LowDegreeAndParametricPatches) {
+  using K = Exact_kernel;
+  using FT = K::FT;
+  using Vector_3 = K::Vector_3;
+  Random_rationals random(37);
+  const auto t = random.triangle<K>();
+  const K::Point_2 p = CGAL::barycenter(t[0], FT(2), t[1], FT(3), t[2], FT(5));
+  for (int degree = 0; degree <= 3; ++degree) {
+    SCOPED_TRACE(degree);
+    const Polynomial_surface<K> polynomial = random.polynomial<K>(degree);
+    const auto patch = polynomial.to_bezier(degree, t[0], t[1], t[2]);
+    EXPECT_TRUE(same_jet(patch.jet(p), polynomial_jet(polynomial, p), true, 1));
+  }
+  const Polynomial_surface<K, Vector_3> surface = random.polynomial<K, Vector_3>(4);
+  const auto patch = surface.to_bezier(4, t[0], t[1], t[2]);
+  EXPECT_TRUE(same_jet(patch.jet(p), polynomial_jet(surface, p), true, 1));
+}
+
+TEST(Jets, C1SplineFittedToACubicHasTheCubicsDerivativesExactly) {
+  // Local polynomial fits reproduce a cubic exactly in exact arithmetic, so the spline's
+  // value, gradient and Hessian are the cubic's at every rational point.
+  using K = Exact_kernel;
+  using FT = K::FT;
+  Delaunay<K> dt;
+  const Planar_domain<K> domain = delaunay_domain<K>(dt, 41, 40);
+  Random_rationals random(43);
+  const Polynomial_surface<K> cubic = random.polynomial<K>(3);
+  std::vector<FT> values;
+  for (const auto& p : domain.points())
+    values.push_back(cubic.evaluate(p));
+  TS::C1_quintic_spline<K> spline(domain, TS::Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(spline, values, TS::Fit::Local_polynomial, 3);
+  const Domain_locator<K> locator(spline.domain());
+  std::vector<K::Point_2> queries;
+  for (Index f = 0; f < spline.domain().number_of_faces(); ++f)
+    queries.push_back(random_point_in(spline.domain(), f, random));
+  const auto jets = TS::evaluate_jets(
+      spline.domain(), locator, [&spline](Index f) { return spline.patch(f); }, queries);
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    ASSERT_TRUE(jets[q].has_value());
+    EXPECT_TRUE(same_jet(*jets[q], polynomial_jet(cubic, queries[q]), true, 1)) << queries[q];
+  }
+}
+
+TYPED_TEST(Output, QueriesOnHullEdgesUpToRoundingGetAValue) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  using Point_2 = typename K::Point_2;
+  constexpr bool exact = is_exact<K>;
+  Delaunay<K> dt;
+  Random_rationals random(47);
+  const Polynomial_surface<K> polynomial = random.polynomial<K>(5);
+  for (const auto& [name, domain] : test_domains<K>(dt)) {
+    SCOPED_TRACE(name);
+    const Domain_locator<K> locator(domain);
+    const auto patches = patches_of(domain, polynomial, false);
+    int strictly_outside = 0;
+    for (Index e = 0; e < domain.number_of_edges(); ++e) {
+      if (!domain.is_boundary_edge(e))
+        continue;
+      // 1e-12 of the edge length outside: snapped to the edge, valued as on the edge
+      const auto [near, on] = point_outside_edge(domain, e, FT(1) / (FT(1000000) * FT(1000000)));
+      if (!locator.locate(near))
+        ++strictly_outside;
+      const auto location = locator.locate_snapped(near);
+      ASSERT_TRUE(location.has_value()) << near;
+      const double values =
+          TS::evaluate_functional(domain, locator, source(patches), std::vector<Point_2>{near})
+              .front();
+      const double expected = CGAL::to_double(polynomial.evaluate(on));
+      EXPECT_NEAR(values, expected, 1e-9 * (std::max)(1.0, std::abs(expected)));
+      const auto jet = TS::evaluate_jet(domain, locator, source(patches), near);
+      ASSERT_TRUE(jet.has_value());
+      // the projection of `near` onto the edge is `on`, exactly in exact arithmetic
+      EXPECT_TRUE(same_jet(*jet, polynomial_jet(polynomial, on), exact, 1e3));
+      // 1e-7 of the edge length is beyond the tolerance: still outside
+      const Point_2 far = point_outside_edge(domain, e, FT(1) / FT(10000000)).first;
+      EXPECT_FALSE(locator.locate_snapped(far).has_value()) << far;
+      EXPECT_TRUE(std::isnan(
+          TS::evaluate_functional(domain, locator, source(patches), std::vector<Point_2>{far})
+              .front()));
+    }
+    if (exact) {
+      EXPECT_GT(strictly_outside, 0); // the snapping did the work
+    }
+  }
+  if constexpr (!exact) {
+    // Points of a slanted hull edge computed in double: some round outside, none is lost.
+    const Planar_domain<K> domain({Point_2(0, 0), Point_2(1, 0), Point_2(0.1, 0.7)}, {{{0, 1, 2}}});
+    const Domain_locator<K> locator(domain);
+    int rounded_outside = 0;
+    for (int i = 0; i <= 1000; ++i) {
+      const double t = i / 1000.0;
+      const Point_2 p((1 - t) * 1 + t * 0.1, t * 0.7);
+      rounded_outside += locator.locate(p) ? 0 : 1;
+      EXPECT_TRUE(locator.locate_snapped(p).has_value()) << p;
+    }
+    EXPECT_GT(rounded_outside, 0);
+  }
+}
+
+TYPED_TEST(Output, OutsideModesUseTheNearestBoundaryPoint) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  using Point_2 = typename K::Point_2;
+  constexpr bool exact = is_exact<K>;
+  Random_rationals random(53);
+  const Polynomial_surface<K> polynomial = random.polynomial<K>(4);
+  const Planar_domain<K> ring = ring_domain<K>(); // [0,3]^2 minus the open (1,2)^2
+  const Domain_locator<K> locator(ring);
+  const auto patches = patches_of(ring, polynomial, false);
+  const FT half = FT(1) / FT(2);
+  // query -> nearest boundary point: beside an edge, beyond a corner, inside the hole
+  const std::vector<std::pair<Point_2, Point_2>> cases{
+      {Point_2(5, half), Point_2(3, half)},
+      {Point_2(-1, -2), Point_2(0, 0)},
+      {Point_2(FT(3) / FT(2), FT(7) / FT(5)), Point_2(FT(3) / FT(2), 1)},
+      {Point_2(FT(1000), FT(-3000)), Point_2(3, 0)}};
+  for (const auto& [p, q] : cases) {
+    SCOPED_TRACE(::testing::Message() << p);
+    EXPECT_FALSE(TS::evaluate_jet(ring, locator, source(patches), p).has_value());
+    const auto nearest = locator.nearest_boundary_point(p);
+    ASSERT_TRUE(nearest.has_value());
+    EXPECT_EQ(nearest->point, q);
+    const TS::Point_jet<FT> at_q = polynomial_jet(polynomial, q);
+    const auto n = TS::evaluate_jet(ring, locator, source(patches), p, TS::Outside::Nearest);
+    ASSERT_TRUE(n.has_value());
+    EXPECT_TRUE(same_jet(*n, at_q, exact, 1e3));
+    const auto l = TS::evaluate_jet(ring, locator, source(patches), p, TS::Outside::Linear);
+    ASSERT_TRUE(l.has_value());
+    TS::Point_jet<FT> linear = at_q;
+    const FT extrapolated =
+        at_q.value + (p.x() - q.x()) * at_q.gradient[0] + (p.y() - q.y()) * at_q.gradient[1];
+    linear.value = extrapolated;
+    linear.hessian = {{FT(0), FT(0), FT(0)}};
+    EXPECT_TRUE(same_jet(*l, linear, exact, 1e7));
+    // values only: the extrapolation still uses the gradient
+    const auto l0 =
+        TS::evaluate_jets(ring, locator, source(patches), {p}, TS::Outside::Linear, 0).front();
+    ASSERT_TRUE(l0.has_value());
+    EXPECT_TRUE(same_value(l0->value, extrapolated, exact, 1e-8, 1e7));
+    EXPECT_EQ(l0->gradient[0], FT(0));
+  }
+  // the ring search agrees with a scan of every boundary edge
+  for (int trial = 0; trial < 300; ++trial) {
+    const Point_2 p(random.rational<FT>(40, 7), random.rational<FT>(40, 7));
+    FT best = -1;
+    for (Index e = 0; e < ring.number_of_edges(); ++e)
+      if (ring.is_boundary_edge(e)) {
+        const typename K::Segment_2 s(ring.point(ring.edge(e)[0]), ring.point(ring.edge(e)[1]));
+        const FT d2 = CGAL::squared_distance(p, s);
+        if (best < FT(0) || d2 < best)
+          best = d2;
+      }
+    const auto nearest = locator.nearest_boundary_point(p);
+    ASSERT_TRUE(nearest.has_value());
+    EXPECT_TRUE(same_value(nearest->squared_distance, best, exact, 1e-12, 1e3)) << p;
+  }
 }
 
 // ---------------------------------------------------------------------------------------

@@ -61,6 +61,24 @@ void de_casteljau_step(Net& net, int n, const std::array<FT, 3>& w) {
 
 /*!
   \ingroup PkgTriangularSplineCore
+  \brief the value, gradient and Hessian of a function of the plane at a point (its 2-jet),
+  as returned by `Bezier_triangle::jet()` and `evaluate_jets()`.
+
+  \tparam Value the value type: `FT` for a functional (height) spline, a vector type for a
+  parametric one (then each derivative is a vector).
+*/
+template <class Value>
+struct Point_jet {
+  /// \f$F(a)\f$
+  Value value;
+  /// \f$(F_x, F_y)\f$
+  std::array<Value, 2> gradient;
+  /// \f$(F_{xx}, F_{xy}, F_{yy})\f$ (the Hessian is symmetric)
+  std::array<Value, 3> hessian;
+};
+
+/*!
+  \ingroup PkgTriangularSplineCore
   \brief a polynomial patch of total degree `m` over a domain triangle \f$(r,s,t)\f$ of the
   plane, given by its Bézier control net \f$b_{i,j,k} = f(r^i s^j t^k)\f$ (Xu, Lemma 2.7.1).
 
@@ -280,6 +298,79 @@ public:
     }
     const Value polar = blossom_barycentric(arguments);
     return scale * polar;
+  }
+
+  /*!
+    returns the value, gradient and Hessian of \f$F\f$ at the point with barycentric
+    coordinates `w`, with respect to the domain coordinates \f$(x, y)\f$. Derivatives of
+    order above `order` (0, 1 or 2) are set to zero and not computed.
+
+    One pass of \f$m-2\f$ de Casteljau steps gives the quadratic net of
+    \f$f(\cdot, \cdot, a^{m-2})\f$; its blossom at \f$(u, v)\f$ times \f$m(m-1)\f$ is
+    \f$D_uD_vF(a)\f$, and at \f$(u, a)\f$ times \f$m\f$ is \f$D_uF(a)\f$. The cost is that of
+    one evaluation plus a constant, and every result is a rational function of the control
+    points, `w` and the vertices: exact for an exact `FT`.
+  */
+  Point_jet<Value> jet_barycentric(const Weights& w, int order = 2) const {
+    const Value zero = Value_traits<Value>::zero();
+    Point_jet<Value> jet{zero, {{zero, zero}}, {{zero, zero, zero}}};
+    // barycentric directions of the unit vectors e_x and e_y
+    const Weights dx = barycentric_direction(Vector_2(FT(1), FT(0)));
+    const Weights dy = barycentric_direction(Vector_2(FT(0), FT(1)));
+    internal::Scratch_net<Value> net(m_net.begin(), m_net.end());
+    const int steps = m_degree < 2 ? 0 : m_degree - 2;
+    for (int l = 0; l < steps; ++l)
+      internal::de_casteljau_step(net, m_degree - l, w);
+    // net now has degree min(m, 2); the last steps read it in place (no copies).
+    using Linear = std::array<Value, 3>;
+    // a degree 1 net: (1,0,0) at 2, (0,1,0) at 1, (0,0,1) at 0
+    const auto dot = [](const Linear& l, const Weights& u) -> Value {
+      Value v = u[0] * l[2] + u[1] * l[1] + u[2] * l[0];
+      return v;
+    };
+    if (m_degree == 0) {
+      jet.value = net[0];
+      return jet;
+    }
+    if (m_degree == 1) {
+      const Linear l{{net[0], net[1], net[2]}};
+      jet.value = dot(l, w);
+      if (order >= 1) {
+        jet.gradient[0] = dot(l, dx);
+        jet.gradient[1] = dot(l, dy);
+      }
+      return jet;
+    }
+    // one de Casteljau step of the degree 2 net (positions as in `de_casteljau_step()`)
+    const auto step = [&net](const Weights& u) -> Linear {
+      Value v0 = u[0] * net[3] + u[1] * net[1] + u[2] * net[0];
+      Value v1 = u[0] * net[4] + u[1] * net[2] + u[2] * net[1];
+      Value v2 = u[0] * net[5] + u[1] * net[4] + u[2] * net[3];
+      return Linear{{std::move(v0), std::move(v1), std::move(v2)}};
+    };
+    const Linear at_a = step(w);
+    jet.value = dot(at_a, w);
+    if (order >= 1) {
+      const FT m(m_degree);
+      const Value gx = dot(at_a, dx), gy = dot(at_a, dy);
+      jet.gradient[0] = m * gx;
+      jet.gradient[1] = m * gy;
+    }
+    if (order >= 2) {
+      const FT mm(m_degree * (m_degree - 1));
+      const Linear along_x = step(dx);
+      const Value hxx = dot(along_x, dx), hxy = dot(along_x, dy);
+      const Value hyy = dot(step(dy), dy);
+      jet.hessian[0] = mm * hxx;
+      jet.hessian[1] = mm * hxy;
+      jet.hessian[2] = mm * hyy;
+    }
+    return jet;
+  }
+
+  /// returns the value, gradient and Hessian of \f$F\f$ at `a` (see `jet_barycentric()`).
+  Point_jet<Value> jet(const Point_2& a, int order = 2) const {
+    return jet_barycentric(barycentric_coordinates(a), order);
   }
 
   /// returns the partial derivative \f$\partial^{p+q}F / \partial x^p \partial y^q\f$ at `a`

@@ -37,7 +37,19 @@ namespace Triangular_spline {
 
   Points on an edge or at a vertex belong to one of the incident triangles (the first
   candidate found); points outside the domain, inside a hole, or with a non-finite
-  coordinate have no location.
+  coordinate have no location with `locate()`.
+
+  <b>Snapping.</b> A query computed or printed in floating point that should lie on a
+  boundary edge often lies a rounding error outside it. `locate_snapped()` (used by the
+  evaluation functions of `evaluate.h`) accepts such a point: if `p` is outside the
+  domain, its nearest boundary point \f$q\f$ on a boundary edge of length \f$\ell\f$ is
+  used instead when
+  \f[ |p - q|^2 \le (10^{-9}\,\ell)^2 + (10^{-13} M)^2, \f]
+  where \f$M\f$ is the largest absolute vertex coordinate of the domain (the second term
+  covers a few hundred units in the last place of large coordinates, e.g. UTM). The test is
+  done in `FT` (exact for exact number types) and \f$q\f$, the orthogonal projection onto
+  the edge, is a rational construction. `nearest_boundary_point()` finds the nearest point
+  of the boundary (outer boundaries and holes) at any distance, for extrapolation.
 
   <b>Complexity.</b> Construction takes \f$O(F + B)\f$ time and memory for \f$F\f$
   triangles and \f$B \approx F/2\f$ buckets, plus the bucket entries, which are
@@ -79,6 +91,26 @@ public:
     /// with `double` they are rounded.
     std::array<FT, 3> barycentric;
   };
+
+  /// the nearest point of the domain boundary to a query, as returned by
+  /// `nearest_boundary_point()`.
+  struct Boundary_point {
+    /// the boundary edge on which the nearest point lies
+    Index edge;
+    /// where the nearest point lies: the face of `edge`, barycentric coordinates of the
+    /// point (one of them exactly zero)
+    Location location;
+    /// the nearest point, the orthogonal projection of the query onto `edge` (clamped to
+    /// its endpoints)
+    Point_2 point;
+    /// the squared distance from the query to `point`
+    FT squared_distance;
+  };
+
+  /// the relative snapping tolerance along an edge (see the class description)
+  static constexpr double snap_edge_tolerance = 1e-9;
+  /// the snapping tolerance relative to the largest vertex coordinate
+  static constexpr double snap_coordinate_tolerance = 1e-13;
   /// @}
 
   /// \name Creation
@@ -110,6 +142,85 @@ public:
         return location;
     }
     return std::nullopt;
+  }
+
+  /// returns the location of `p` as `locate()` does, or, for a point outside the domain by
+  /// at most the snapping tolerance (see the class description), the location of its
+  /// nearest boundary point; `std::nullopt` otherwise.
+  std::optional<Location> locate_snapped(const Point_2& p) const {
+    std::optional<Location> location = locate(p);
+    if (location || !CGAL::is_finite(p.x()) || !CGAL::is_finite(p.y()))
+      return location;
+    // Only edges whose box widened by the tolerance holds p are candidates: one bucket.
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    const Edge_grid& g = m_boundary;
+    if (g.offsets.empty() || !(x >= g.xmin && x <= g.xmax && y >= g.ymin && y <= g.ymax))
+      return std::nullopt;
+    // each edge has its own tolerance: keep the nearest edge within its tolerance
+    std::optional<Boundary_point> best;
+    const FT a(snap_edge_tolerance), b(snap_coordinate_tolerance * m_largest_coordinate);
+    const std::size_t bucket = g.row(y) * g.nx + g.column(x);
+    for (std::size_t i = g.offsets[bucket]; i < g.offsets[bucket + 1]; ++i) {
+      const Index e = g.entries[i];
+      std::optional<Boundary_point> candidate;
+      consider_edge(e, p, candidate);
+      const auto& ends = m_domain.edge(e);
+      const FT length2 = squared_length(m_domain.point(ends[0]), m_domain.point(ends[1]));
+      if (candidate->squared_distance <= a * a * length2 + b * b &&
+          (!best || candidate->squared_distance < best->squared_distance))
+        best = std::move(candidate);
+    }
+    if (!best)
+      return std::nullopt;
+    return best->location;
+  }
+
+  /// returns the point of the domain boundary (outer boundaries and holes) nearest to `p`,
+  /// whether `p` is inside the domain or not, or `std::nullopt` if `p` is not finite or the
+  /// domain is empty. Distances are compared in `FT` (exactly for exact number types);
+  /// the search visits rings of buckets around `p` and stops once no closer edge can lie
+  /// in the next ring (\f$O(1)\f$ expected near the domain, \f$O(B)\f$ for far away
+  /// points or very uneven boundaries, \f$B\f$ the number of boundary edges).
+  std::optional<Boundary_point> nearest_boundary_point(const Point_2& p) const {
+    std::optional<Boundary_point> best;
+    if (!CGAL::is_finite(p.x()) || !CGAL::is_finite(p.y()) || m_boundary.offsets.empty())
+      return best;
+    const Edge_grid& g = m_boundary;
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    // |p - z|^2 >= |p' - z|^2 + |p - p'|^2 for z in the grid box and p' the clamped p.
+    const double cx = (std::min)((std::max)(x, g.xmin), g.xmax);
+    const double cy = (std::min)((std::max)(y, g.ymin), g.ymax);
+    const double outside2 = (x - cx) * (x - cx) + (y - cy) * (y - cy);
+    const double cell =
+        (std::min)((g.xmax - g.xmin) / double(g.nx), (g.ymax - g.ymin) / double(g.ny));
+    const std::ptrdiff_t c0 = static_cast<std::ptrdiff_t>(g.column(cx));
+    const std::ptrdiff_t r0 = static_cast<std::ptrdiff_t>(g.row(cy));
+    const std::ptrdiff_t nx = static_cast<std::ptrdiff_t>(g.nx),
+                         ny = static_cast<std::ptrdiff_t>(g.ny);
+    const std::ptrdiff_t rings = (std::max)(nx, ny);
+    for (std::ptrdiff_t r = 0; r <= rings; ++r) {
+      for (std::ptrdiff_t j = r0 - r; j <= r0 + r; ++j) {
+        if (j < 0 || j >= ny)
+          continue;
+        const bool full_row = j == r0 - r || j == r0 + r;
+        for (std::ptrdiff_t i = c0 - r; i <= c0 + r;
+             i += full_row ? 1 : 2 * (std::max)(r, std::ptrdiff_t(1))) {
+          if (i < 0 || i >= nx)
+            continue;
+          const std::size_t bucket = static_cast<std::size_t>(j * nx + i);
+          for (std::size_t k = g.offsets[bucket]; k < g.offsets[bucket + 1]; ++k)
+            consider_edge(g.entries[k], p, best);
+        }
+      }
+      // Cells of ring r + 1 are at least r cells away from p'. The slack covers the rounding
+      // of the double bound (relative 1e-15), small enough that far queries still stop early.
+      if (best) {
+        const double bound = double(r) * cell;
+        if (CGAL::to_double(best->squared_distance) * (1 + 1e-9) <= bound * bound + outside2)
+          break;
+      }
+    }
+    return best;
   }
 
   /// returns `true` iff `p` lies in the closed domain.
@@ -158,6 +269,44 @@ private:
         location.barycentric[i] = d[i] / sum;
     }
     return location;
+  }
+
+  static FT squared_length(const Point_2& a, const Point_2& b) {
+    const FT dx = b.x() - a.x(), dy = b.y() - a.y();
+    const FT l2 = dx * dx + dy * dy;
+    return l2;
+  }
+
+  // Keeps in `best` the nearer of it and the projection of p onto boundary edge e.
+  void consider_edge(Index e, const Point_2& p, std::optional<Boundary_point>& best) const {
+    const auto& ends = m_domain.edge(e);
+    const Point_2& a = m_domain.point(ends[0]);
+    const Point_2& b = m_domain.point(ends[1]);
+    const FT ux = b.x() - a.x(), uy = b.y() - a.y();
+    const FT dot = (p.x() - a.x()) * ux + (p.y() - a.y()) * uy;
+    const FT length2 = ux * ux + uy * uy;
+    // parameter t of the projection a + t (b - a), clamped to the edge
+    FT t(0);
+    if (dot >= length2)
+      t = FT(1);
+    else if (dot > FT(0))
+      t = dot / length2;
+    const FT qx = a.x() + t * ux, qy = a.y() + t * uy;
+    const FT dx = p.x() - qx, dy = p.y() - qy;
+    const FT d2 = dx * dx + dy * dy;
+    if (best && !(d2 < best->squared_distance))
+      return;
+    const auto& faces = m_domain.edge_faces(e);
+    const Index f = faces[0] != Domain::null_index ? faces[0] : faces[1];
+    Location location{f, {{FT(0), FT(0), FT(0)}}};
+    const auto& t3 = m_domain.face(f);
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (t3[i] == ends[0])
+        location.barycentric[i] = FT(1) - t;
+      else if (t3[i] == ends[1])
+        location.barycentric[i] = t;
+    }
+    best = Boundary_point{e, location, Point_2(qx, qy), d2};
   }
 
   static FT area2(const Point_2& a, const Point_2& b, const Point_2& c) {
@@ -275,9 +424,103 @@ private:
         for (std::size_t c = column(b.xmin), c1 = column(b.xmax); c <= c1; ++c)
           m_entries[fill[r * m_nx + c]++] = static_cast<Index>(f);
     }
+    build_boundary_grid(margin);
   }
 
+  // A bucket grid of the boundary edges alone, each registered with its box widened by
+  // more than the snapping tolerance, so that snapping looks at one bucket.
+  void build_boundary_grid(double margin) {
+    std::vector<Index> edges;
+    m_largest_coordinate = 0;
+    for (const Point_2& p : m_domain.points())
+      m_largest_coordinate = (std::max)({m_largest_coordinate, std::abs(CGAL::to_double(p.x())),
+                                         std::abs(CGAL::to_double(p.y()))});
+    for (std::size_t e = 0; e < m_domain.number_of_edges(); ++e)
+      if (m_domain.is_boundary_edge(static_cast<Index>(e)))
+        edges.push_back(static_cast<Index>(e));
+    if (edges.empty())
+      return;
+    Edge_grid& g = m_boundary;
+    std::vector<Box> boxes(edges.size());
+    g.xmin = g.ymin = HUGE_VAL;
+    g.xmax = g.ymax = -HUGE_VAL;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+      const auto& ends = m_domain.edge(edges[k]);
+      const double x0 = CGAL::to_double(m_domain.point(ends[0]).x());
+      const double y0 = CGAL::to_double(m_domain.point(ends[0]).y());
+      const double x1 = CGAL::to_double(m_domain.point(ends[1]).x());
+      const double y1 = CGAL::to_double(m_domain.point(ends[1]).y());
+      // twice the tolerance (the sum bounds the root of the sum of squares), plus rounding
+      const double widen = 2 * snap_edge_tolerance * std::hypot(x1 - x0, y1 - y0) +
+                           2 * snap_coordinate_tolerance * m_largest_coordinate + margin +
+                           (std::numeric_limits<double>::min)();
+      Box& b = boxes[k];
+      b = Box{(std::min)(x0, x1) - widen, (std::min)(y0, y1) - widen, (std::max)(x0, x1) + widen,
+              (std::max)(y0, y1) + widen};
+      g.xmin = (std::min)(g.xmin, b.xmin);
+      g.ymin = (std::min)(g.ymin, b.ymin);
+      g.xmax = (std::max)(g.xmax, b.xmax);
+      g.ymax = (std::max)(g.ymax, b.ymax);
+    }
+    const double width = g.xmax - g.xmin, height = g.ymax - g.ymin;
+    const double buckets = (std::max)(1.0, double(edges.size()));
+    double nx = std::sqrt(buckets * width / height), ny = std::sqrt(buckets * height / width);
+    nx = (std::min)((std::max)(1.0, std::round(nx)), buckets);
+    ny = (std::min)((std::max)(1.0, std::round(ny)), buckets);
+    g.set_grid(static_cast<std::size_t>(nx), static_cast<std::size_t>(ny));
+    const auto count = [&]() {
+      std::size_t total = 0;
+      for (const Box& b : boxes)
+        total += (g.column(b.xmax) - g.column(b.xmin) + 1) * (g.row(b.ymax) - g.row(b.ymin) + 1);
+      return total;
+    };
+    // A boundary edge spans about one bucket; long diagonal edges span many: stay linear.
+    while (g.nx * g.ny > 1 && count() > 8 * edges.size() + 16)
+      g.set_grid(g.nx / 2, g.ny / 2);
+    g.offsets.assign(g.nx * g.ny + 1, 0);
+    for (const Box& b : boxes)
+      for (std::size_t r = g.row(b.ymin), r1 = g.row(b.ymax); r <= r1; ++r)
+        for (std::size_t c = g.column(b.xmin), c1 = g.column(b.xmax); c <= c1; ++c)
+          ++g.offsets[r * g.nx + c + 1];
+    for (std::size_t i = 1; i < g.offsets.size(); ++i)
+      g.offsets[i] += g.offsets[i - 1];
+    g.entries.resize(g.offsets.back());
+    std::vector<std::size_t> fill(g.offsets.begin(), g.offsets.end() - 1);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+      const Box& b = boxes[k];
+      for (std::size_t r = g.row(b.ymin), r1 = g.row(b.ymax); r <= r1; ++r)
+        for (std::size_t c = g.column(b.xmin), c1 = g.column(b.xmax); c <= c1; ++c)
+          g.entries[fill[r * g.nx + c]++] = edges[k];
+    }
+  }
+
+  // The grid of boundary edges (its own extent and size: snapping and nearest points).
+  struct Edge_grid {
+    double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+    double inverse_width = 0, inverse_height = 0;
+    std::size_t nx = 1, ny = 1;
+    std::vector<std::size_t> offsets; // empty: no boundary
+    std::vector<Index> entries;
+
+    std::size_t column(double x) const {
+      const double c = std::floor((x - xmin) * inverse_width);
+      return !(c > 0) ? 0 : (std::min)(static_cast<std::size_t>(c), nx - 1);
+    }
+    std::size_t row(double y) const {
+      const double r = std::floor((y - ymin) * inverse_height);
+      return !(r > 0) ? 0 : (std::min)(static_cast<std::size_t>(r), ny - 1);
+    }
+    void set_grid(std::size_t x, std::size_t y) {
+      nx = (std::max)(x, std::size_t(1));
+      ny = (std::max)(y, std::size_t(1));
+      inverse_width = double(nx) / (xmax - xmin);
+      inverse_height = double(ny) / (ymax - ymin);
+    }
+  };
+
   const Domain& m_domain;
+  Edge_grid m_boundary;
+  double m_largest_coordinate = 0;
   double m_xmin = 0, m_ymin = 0, m_xmax = 0, m_ymax = 0;
   double m_inverse_width = 0, m_inverse_height = 0;
   std::size_t m_nx = 1, m_ny = 1;

@@ -12,6 +12,7 @@
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <optional>
@@ -78,6 +79,11 @@ public:
 
   Value evaluate(const Weights& w) const { return m_patch.evaluate_barycentric(patch_weights(w)); }
 
+  // derivatives w.r.t. (x, y) do not depend on the order of the patch's vertices
+  Point_jet<Value> jet(const Weights& w, int order) const {
+    return m_patch.jet_barycentric(patch_weights(w), order);
+  }
+
   bool matched() const { return m_matched; }
 
 private:
@@ -95,7 +101,7 @@ void for_each_location(const Planar_domain<GeomTraits>& domain,
   CGAL_precondition(&locator.domain() == &domain);
   using Patch = Patch_of<PatchSource, typename Planar_domain<GeomTraits>::Index>;
   for (std::size_t q = 0; q < queries.size(); ++q) {
-    const auto location = locator.locate(queries[q]);
+    const auto location = locator.locate_snapped(queries[q]);
     if (!location) {
       callback(q, nullptr);
       continue;
@@ -115,7 +121,9 @@ void for_each_location(const Planar_domain<GeomTraits>& domain,
   \ingroup PkgTriangularSplineSplines
   \brief evaluates a functional (height) spline at query points.
 
-  Each query is located in the domain with `locator`; the patch of the triangle found is
+  Each query is located in the domain with `locator.locate_snapped()` (a point outside a
+  boundary edge by no more than a rounding error is evaluated on the edge, see
+  `Domain_locator`); the patch of the triangle found is
   evaluated by de Casteljau's algorithm at the point's barycentric coordinates with
   respect to the patch's own vertices (the patch may list the triangle's vertices in any
   order). Points on an edge or at a vertex are evaluated in one incident patch: for a
@@ -131,7 +139,7 @@ void for_each_location(const Planar_domain<GeomTraits>& domain,
   \param queries the query points
   \return one value per query, in input order: the height converted to `double`
   (computed exactly first when `FT` is exact), or a quiet NaN where the query is outside
-  the domain, in a hole, or not finite
+  the domain or in a hole (beyond the snapping tolerance), or not finite
   \pre `locator` was built on `domain`
 */
 template <class GeomTraits, class PatchSource>
@@ -201,6 +209,117 @@ auto evaluate_at(const Planar_domain<GeomTraits>& domain, const Domain_locator<G
                                   result = *value;
                               });
   return result;
+}
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief what `evaluate_jets()` returns for a query outside the domain (beyond the snapping
+  tolerance of `Domain_locator::locate_snapped()`) or in a hole.
+*/
+enum class Outside {
+  /// no value (`std::nullopt`)
+  No_value,
+  /// the value, gradient and Hessian of the spline at the nearest boundary point \f$q\f$
+  Nearest,
+  /// the linear extrapolation \f$F(q) + \nabla F(q) \cdot (p - q)\f$ from the nearest
+  /// boundary point \f$q\f$: gradient \f$\nabla F(q)\f$, Hessian zero
+  Linear
+};
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief evaluates the value, gradient and Hessian of a spline at query points, locating
+  included: the one call to get values and derivatives from any spline whose patches are
+  `Bezier_triangle`s over a `Planar_domain` (a `C1_quintic_spline`, a spline read with
+  `read_spline_file()`, a network raised by `adjust_network()`, a `Mann_interpolant`).
+
+  Each query is located with `locator.locate_snapped()`, so points on a boundary edge up to
+  rounding get a value; the patch of the triangle found gives the jet
+  (`Bezier_triangle::jet_barycentric()`), with derivatives taken with respect to the
+  domain coordinates \f$(x, y)\f$. On an edge or at a vertex the jet of one incident patch
+  is returned: for a \f$C^1\f$ spline the value and gradient do not depend on the choice,
+  the Hessian may (it is one-sided there). Queries outside are handled by `outside`.
+
+  Every result is computed in `FT`: exact with `CGAL::Exact_rational`, rounded with
+  `double` (use `CGAL::to_double()` on the members to print them).
+
+  \tparam GeomTraits a model of `Kernel`
+  \tparam PatchSource a callable with `patch(f)` returning (by value or by reference) the
+  `Bezier_triangle` of face `f` of `domain`
+  \param domain the domain triangulation
+  \param locator a locator built on `domain`
+  \param patch the patch source
+  \param queries the query points
+  \param outside what to return outside the domain
+  \param order the highest derivative order wanted (0, 1 or 2); higher derivatives are zero
+  and are not computed
+  \return one entry per query, in input order: the jet, or `std::nullopt` where the query is
+  not finite, or outside the domain with `Outside::No_value`
+  \pre `locator` was built on `domain`
+*/
+template <class GeomTraits, class PatchSource>
+auto evaluate_jets(const Planar_domain<GeomTraits>& domain,
+                   const Domain_locator<GeomTraits>& locator, PatchSource patch,
+                   const std::vector<typename GeomTraits::Point_2>& queries,
+                   Outside outside = Outside::No_value, int order = 2)
+    -> std::vector<std::optional<Point_jet<typename internal::Patch_of<
+        PatchSource, typename Planar_domain<GeomTraits>::Index>::Value_type>>> {
+  CGAL_precondition(&locator.domain() == &domain);
+  using Index = typename Planar_domain<GeomTraits>::Index;
+  using Patch = internal::Patch_of<PatchSource, Index>;
+  using Value = typename Patch::Value_type;
+  using FT = typename GeomTraits::FT;
+  std::vector<std::optional<Point_jet<Value>>> jets(queries.size());
+  const auto jet_at = [&](const typename Domain_locator<GeomTraits>::Location& location,
+                          int jet_order) {
+    // binds to the source's reference, or extends the life of the returned patch
+    const Patch& bezier = patch(location.face);
+    const internal::Face_to_patch<GeomTraits, Value> frame(domain, location.face, bezier);
+    return frame.jet(location.barycentric, jet_order);
+  };
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const auto& p = queries[q];
+    if (const auto location = locator.locate_snapped(p)) {
+      jets[q] = jet_at(*location, order);
+      continue;
+    }
+    if (outside == Outside::No_value)
+      continue;
+    const auto nearest = locator.nearest_boundary_point(p);
+    if (!nearest)
+      continue;
+    // the extrapolated value needs the gradient even when only values are asked for
+    Point_jet<Value> jet =
+        jet_at(nearest->location, outside == Outside::Linear ? (std::max)(order, 1) : order);
+    if (outside == Outside::Linear) {
+      const FT dx = p.x() - nearest->point.x(), dy = p.y() - nearest->point.y();
+      Value value = jet.value + dx * jet.gradient[0] + dy * jet.gradient[1];
+      jet.value = std::move(value);
+      const Value zero = Value_traits<Value>::zero();
+      jet.hessian = {{zero, zero, zero}};
+      if (order < 1)
+        jet.gradient = {{zero, zero}};
+    }
+    jets[q] = std::move(jet);
+  }
+  return jets;
+}
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief evaluates the value, gradient and Hessian of a spline at one point, locating
+  included (see the overload for many points).
+*/
+template <class GeomTraits, class PatchSource>
+auto evaluate_jet(const Planar_domain<GeomTraits>& domain,
+                  const Domain_locator<GeomTraits>& locator, PatchSource patch,
+                  const typename GeomTraits::Point_2& query, Outside outside = Outside::No_value,
+                  int order = 2)
+    -> std::optional<Point_jet<typename internal::Patch_of<
+        PatchSource, typename Planar_domain<GeomTraits>::Index>::Value_type>> {
+  return evaluate_jets(domain, locator, patch, std::vector<typename GeomTraits::Point_2>{query},
+                       outside, order)
+      .front();
 }
 
 } // namespace Triangular_spline

@@ -1,0 +1,151 @@
+// tspline eval: argument handling; the work is in eval_job.cpp.
+
+#include "cli.h"
+#include "commands.h"
+#include "eval_job.h"
+#include "files.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace tspline {
+
+namespace {
+
+// Splits "a,b,c" at the commas (empty fields kept, so that "1,,2" is an error).
+std::vector<std::string> split_commas(const std::string& text) {
+  std::vector<std::string> fields(1);
+  for (const char c : text) {
+    if (c == ',')
+      fields.emplace_back();
+    else
+      fields.back() += c;
+  }
+  return fields;
+}
+
+double grid_number(const std::string& token, const char* name) {
+  errno = 0;
+  char* end = nullptr;
+  const double x = std::strtod(token.c_str(), &end);
+  if (token.empty() || end != token.c_str() + token.size() || errno == ERANGE || !std::isfinite(x))
+    throw Usage_error(std::string("--grid: ") + name + " must be a finite number, not '" + token +
+                      "'");
+  return x;
+}
+
+long long grid_count(const std::string& token, const char* name) {
+  // Above 10^6 nodes per axis a grid is a mistake, and the product stays far from overflow.
+  const long long max = 1000000;
+  errno = 0;
+  char* end = nullptr;
+  const long long n = std::strtoll(token.c_str(), &end, 10);
+  if (token.empty() || end != token.c_str() + token.size() || errno == ERANGE)
+    throw Usage_error(std::string("--grid: ") + name + " must be an integer, not '" + token + "'");
+  if (n < 1 || n > max)
+    throw Usage_error(std::string("--grid: ") + name + " must be between 1 and " +
+                      std::to_string(max) + ", not " + token);
+  return n;
+}
+
+Eval_grid parse_grid(const std::string& text) {
+  const std::vector<std::string> f = split_commas(text);
+  if (f.size() != 6)
+    throw Usage_error("--grid expects XMIN,XMAX,YMIN,YMAX,NX,NY (6 values), not '" + text + "'");
+  Eval_grid g;
+  g.xmin = grid_number(f[0], "XMIN");
+  g.xmax = grid_number(f[1], "XMAX");
+  g.ymin = grid_number(f[2], "YMIN");
+  g.ymax = grid_number(f[3], "YMAX");
+  g.nx = grid_count(f[4], "NX");
+  g.ny = grid_count(f[5], "NY");
+  const long long max_nodes = 100000000;
+  if (g.nx * g.ny > max_nodes)
+    throw Usage_error("--grid: NX * NY = " + std::to_string(g.nx * g.ny) + " nodes, more than " +
+                      std::to_string(max_nodes));
+  for (const auto& [low, high, n, axis] :
+       {std::make_tuple(g.xmin, g.xmax, g.nx, "X"), std::make_tuple(g.ymin, g.ymax, g.ny, "Y")}) {
+    const std::string a(axis);
+    if (low > high)
+      throw Usage_error("--grid: " + a + "MIN > " + a + "MAX (reversed range)");
+    if (n > 1 && !(low < high))
+      throw Usage_error("--grid: N" + a + " > 1 needs " + a + "MIN < " + a + "MAX");
+    if (n == 1 && low != high)
+      throw Usage_error("--grid: N" + a + " = 1 needs " + a + "MIN = " + a + "MAX (one line)");
+  }
+  return g;
+}
+
+} // namespace
+
+int run_eval(const std::vector<std::string>& args) {
+  Argument_parser parser("eval", std::string(command_summary("eval")));
+  parser.describe(
+      "Evaluates a saved functional spline (a 'tspline-spline 1' file of dimension 1, as written "
+      "by 'tspline c1 --save', 'tspline mann --save' and 'tspline adjust --output') and its "
+      "derivatives at query points or on a regular grid. Output: CSV with the header "
+      "'x,y,z[,zx,zy[,zxx,zxy,zyy]]' (numbers as %.17g, 'nan' where there is no value), or, "
+      "with --grid and an output ending in .asc, an ESRI ASCII grid of the values (square "
+      "cells, rows from north to south, NODATA_value -9999; the cells are centred on the grid "
+      "nodes).");
+  parser.describe(
+      "Points outside a boundary edge by a rounding error (at most 1e-9 of the edge's length, "
+      "or 1e-13 of the largest coordinate) are evaluated on the edge. Farther points get "
+      "--outside: nan, the spline at the nearest boundary point (nearest), or the linear "
+      "extrapolation from that point with its gradient (linear, Hessian 0). On an edge or at a "
+      "vertex the derivatives are those of one incident patch.");
+  parser.add_option("input", "FILE.spline", "the spline to evaluate (dimension 1)");
+  parser.add_option("query", "FILE.xy",
+                    "query points, 'x y' per line (a third column, as in .xyz files, is ignored)");
+  parser.add_option("grid", "XMIN,XMAX,YMIN,YMAX,NX,NY",
+                    "a regular grid of NX x NY nodes, both ends included (CSV rows: x fastest, y "
+                    "increasing)");
+  parser.add_option("derivatives", "D", "0: z; 1: also zx, zy; 2: also zxx, zxy, zyy", "0");
+  parser.add_option("outside", "MODE", "nan, nearest or linear (see above)", "nan");
+  parser.add_switch("exact", "read and evaluate in exact rational arithmetic (slower; the "
+                             "printed numbers are the exact results rounded to double)");
+  parser.add_option("output", "OUT", "CSV file, '-' for stdout, or FILE.asc with --grid");
+  const Parsed_arguments parsed = parser.parse(args);
+  if (parsed.help_requested()) {
+    std::cout << parser.help();
+    return 0;
+  }
+  if (!parsed.has("input"))
+    throw Usage_error("missing --input FILE.spline");
+  if (parsed.has("query") == parsed.has("grid"))
+    throw Usage_error("give exactly one of --query FILE.xy and --grid XMIN,XMAX,YMIN,YMAX,NX,NY");
+  if (!parsed.has("output"))
+    throw Usage_error("missing --output OUT (a CSV file, '-' for stdout, or FILE.asc)");
+  Eval_job job;
+  job.input = parsed.value("input");
+  job.output = parsed.value("output");
+  job.derivatives = parsed.integer_in("derivatives", 0, 2);
+  job.outside = parsed.value("outside");
+  if (job.outside != "nan" && job.outside != "nearest" && job.outside != "linear")
+    throw Usage_error("--outside must be nan, nearest or linear, not '" + job.outside + "'");
+  job.exact = parsed.is_set("exact");
+  if (parsed.has("query")) {
+    job.query = parsed.value("query");
+  } else {
+    job.use_grid = true;
+    job.grid = parse_grid(parsed.value("grid"));
+  }
+  if (lowercase_extension(job.output) == "asc") {
+    if (!job.use_grid)
+      throw Usage_error("an ESRI ASCII grid (.asc) output needs --grid");
+    if (job.derivatives > 0)
+      throw Usage_error("an ESRI ASCII grid (.asc) holds the values only: use a CSV output for "
+                        "--derivatives " +
+                        std::to_string(job.derivatives));
+    ascii_grid_cellsize(job.grid); // square cells, checked before the spline is read
+  }
+  run_eval_job(job, std::cout);
+  return 0;
+}
+
+} // namespace tspline

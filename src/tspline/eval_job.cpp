@@ -1,0 +1,332 @@
+// tspline eval: read a saved spline, locate and evaluate jets (value, gradient, Hessian),
+// write CSV or an ESRI ASCII grid. Instantiated for double and for exact rationals.
+
+#include "eval_job.h"
+#include "cli.h"
+#include "files.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Triangular_spline/Domain_locator.h>
+#include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/IO/spline_file.h>
+#include <CGAL/Triangular_spline/IO/text_tokens.h>
+#include <CGAL/Triangular_spline/evaluate.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <type_traits>
+
+namespace tspline {
+
+namespace {
+
+namespace TS = CGAL::Triangular_spline;
+using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+
+// Points per evaluation chunk: bounds memory for large grids, output streams as it goes.
+constexpr std::size_t chunk_size = 1 << 16;
+
+template <class K>
+std::vector<typename K::Point_2> read_query_points(const std::string& path) {
+  std::ifstream in = open_input(path);
+  std::vector<typename K::Point_2> points;
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    const std::vector<std::string> tokens = TS::internal::tokens_of_line(line);
+    if (tokens.empty())
+      continue;
+    if (tokens.size() != 2 && tokens.size() != 3)
+      throw TS::Invalid_input(path + ":" + std::to_string(number) +
+                              ": expected 'x y' (or 'x y z'), got " +
+                              std::to_string(tokens.size()) + " fields");
+    try {
+      points.emplace_back(TS::parse_number<typename K::FT>(tokens[0]),
+                          TS::parse_number<typename K::FT>(tokens[1]));
+    } catch (const TS::Invalid_input& e) {
+      throw TS::Invalid_input(path + ":" + std::to_string(number) + ": " + e.what());
+    }
+  }
+  if (in.bad())
+    throw std::runtime_error("read error on '" + path + "'");
+  return points;
+}
+
+// Node i of n from low to high; the last node is `high` exactly.
+double node(double low, double high, long long i, long long n) {
+  if (n <= 1)
+    return low;
+  if (i == n - 1)
+    return high;
+  return low + (high - low) * (double(i) / double(n - 1));
+}
+
+// The double nearest to x: CGAL::to_double() of an exact rational truncates, and the CSV of an
+// exact evaluation should print the exact result correctly rounded.
+template <class FT>
+double nearest_double(const FT& x) {
+  const double d = CGAL::to_double(x);
+  if constexpr (std::is_floating_point<FT>::value) {
+    return d;
+  } else {
+    double best = d;
+    FT error = CGAL::abs(FT(d) - x);
+    for (const double c : {std::nextafter(d, -HUGE_VAL), std::nextafter(d, HUGE_VAL)}) {
+      const FT e = CGAL::abs(FT(c) - x);
+      if (std::isfinite(c) && e < error) {
+        best = c;
+        error = e;
+      }
+    }
+    return best;
+  }
+}
+
+void append_number(std::string& text, double x) {
+  char buffer[32];
+  const int size = std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  text.append(buffer, static_cast<std::size_t>(size));
+}
+
+struct Counts {
+  std::size_t points = 0, inside = 0, outside = 0;
+};
+
+template <class K>
+class Evaluator {
+public:
+  using FT = typename K::FT;
+  using Point_2 = typename K::Point_2;
+  using Jet = TS::Point_jet<FT>;
+
+  Evaluator(const std::string& input, int derivatives, TS::Outside outside)
+      : m_file(read(input)), m_locator(m_file.domain), m_derivatives(derivatives),
+        m_outside(outside) {}
+
+  // Jets of `points` (NaN-free where a value exists); counts inside and outside points.
+  std::vector<std::optional<Jet>> evaluate(const std::vector<Point_2>& points) {
+    const auto patch = [this](std::uint32_t f) -> const TS::Bezier_triangle<K, FT>& {
+      return m_file.patches[f];
+    };
+    // Strictly first, then the outside mode on the misses only: the counts come for free.
+    std::vector<std::optional<Jet>> jets = TS::evaluate_jets(
+        m_file.domain, m_locator, patch, points, TS::Outside::No_value, m_derivatives);
+    std::vector<Point_2> missed;
+    std::vector<std::size_t> where;
+    for (std::size_t q = 0; q < jets.size(); ++q)
+      if (!jets[q]) {
+        missed.push_back(points[q]);
+        where.push_back(q);
+      }
+    m_counts.points += points.size();
+    m_counts.outside += missed.size();
+    m_counts.inside += points.size() - missed.size();
+    if (m_outside != TS::Outside::No_value && !missed.empty()) {
+      auto extended =
+          TS::evaluate_jets(m_file.domain, m_locator, patch, missed, m_outside, m_derivatives);
+      for (std::size_t k = 0; k < missed.size(); ++k)
+        jets[where[k]] = std::move(extended[k]);
+    }
+    return jets;
+  }
+
+  const TS::Spline_file<K, FT>& file() const { return m_file; }
+  const Counts& counts() const { return m_counts; }
+
+private:
+  static TS::Spline_file<K, FT> read(const std::string& path) {
+    std::ifstream in = open_input(path);
+    if (TS::spline_file_dimension(in) == 3)
+      throw TS::Invalid_input("'" + path +
+                              "' holds a parametric spline (dimension 3): eval needs a "
+                              "functional spline z = f(x, y) (dimension 1)");
+    return TS::read_spline_file<K, FT>(in, path);
+  }
+
+  TS::Spline_file<K, FT> m_file;
+  TS::Domain_locator<K> m_locator;
+  int m_derivatives;
+  TS::Outside m_outside;
+  Counts m_counts;
+};
+
+// Appends CSV lines "x,y,z[,zx,zy[,zxx,zxy,zyy]]" for the points and their jets.
+template <class K>
+void append_csv(std::string& text, const std::vector<typename K::Point_2>& points,
+                const std::vector<std::optional<TS::Point_jet<typename K::FT>>>& jets,
+                int derivatives) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    append_number(text, nearest_double(points[q].x()));
+    text += ',';
+    append_number(text, nearest_double(points[q].y()));
+    const auto& jet = jets[q];
+    text += ',';
+    append_number(text, jet ? nearest_double(jet->value) : nan);
+    if (derivatives >= 1)
+      for (std::size_t i = 0; i < 2; ++i) {
+        text += ',';
+        append_number(text, jet ? nearest_double(jet->gradient[i]) : nan);
+      }
+    if (derivatives >= 2)
+      for (std::size_t i = 0; i < 3; ++i) {
+        text += ',';
+        append_number(text, jet ? nearest_double(jet->hessian[i]) : nan);
+      }
+    text += '\n';
+  }
+}
+
+void write_text(std::ostream& output, const std::string& text, const std::string& name) {
+  output.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!output)
+    throw std::runtime_error("cannot write '" + name + "'");
+}
+
+template <class K>
+void run(const Eval_job& job, std::ostream& out) {
+  using Point_2 = typename K::Point_2;
+  const TS::Outside outside = job.outside == "nearest"  ? TS::Outside::Nearest
+                              : job.outside == "linear" ? TS::Outside::Linear
+                                                        : TS::Outside::No_value;
+  Stopwatch clock;
+  Evaluator<K> evaluator(job.input, job.derivatives, outside);
+  const double read_seconds = clock.lap();
+
+  // Queries first: a bad query file leaves no half-written output behind.
+  std::vector<Point_2> points;
+  if (!job.use_grid)
+    points = read_query_points<K>(job.query);
+
+  const bool to_stdout = job.output == "-";
+  const bool ascii_grid = job.use_grid && lowercase_extension(job.output) == "asc";
+  std::ofstream file;
+  if (!to_stdout)
+    file = open_output(job.output);
+  std::ostream& output = to_stdout ? std::cout : file;
+  const std::string name = to_stdout ? std::string("stdout") : job.output;
+
+  double evaluate_seconds = 0;
+  std::string text;
+  if (!ascii_grid) {
+    text = "x,y,z";
+    if (job.derivatives >= 1)
+      text += ",zx,zy";
+    if (job.derivatives >= 2)
+      text += ",zxx,zxy,zyy";
+    text += '\n';
+  }
+  if (!job.use_grid) {
+    for (std::size_t begin = 0; begin < points.size(); begin += chunk_size) {
+      const std::vector<Point_2> chunk(points.begin() + static_cast<std::ptrdiff_t>(begin),
+                                       points.begin() + static_cast<std::ptrdiff_t>((std::min)(
+                                                            points.size(), begin + chunk_size)));
+      Stopwatch timer;
+      const auto jets = evaluator.evaluate(chunk);
+      evaluate_seconds += timer.lap();
+      append_csv<K>(text, chunk, jets, job.derivatives);
+      write_text(output, text, name);
+      text.clear();
+    }
+  } else {
+    const Eval_grid& g = job.grid;
+    if (ascii_grid) {
+      const double cellsize = ascii_grid_cellsize(g);
+      text += "ncols " + std::to_string(g.nx) + "\nnrows " + std::to_string(g.ny) + "\nxllcorner ";
+      append_number(text, g.xmin - cellsize / 2);
+      text += "\nyllcorner ";
+      append_number(text, g.ymin - cellsize / 2);
+      text += "\ncellsize ";
+      append_number(text, cellsize);
+      text += "\nNODATA_value -9999\n";
+    }
+    // CSV rows go south to north; ESRI grids list rows from north to south.
+    const long long rows_per_chunk = (std::max)(1LL, static_cast<long long>(chunk_size) / g.nx);
+    std::vector<Point_2> chunk;
+    for (long long first = 0; first < g.ny; first += rows_per_chunk) {
+      const long long last = (std::min)(g.ny, first + rows_per_chunk);
+      chunk.clear();
+      for (long long r = first; r < last; ++r) {
+        const long long j = ascii_grid ? g.ny - 1 - r : r;
+        const double y = node(g.ymin, g.ymax, j, g.ny);
+        for (long long i = 0; i < g.nx; ++i)
+          chunk.emplace_back(node(g.xmin, g.xmax, i, g.nx), y);
+      }
+      Stopwatch timer;
+      const auto jets = evaluator.evaluate(chunk);
+      evaluate_seconds += timer.lap();
+      if (ascii_grid) {
+        for (std::size_t q = 0; q < chunk.size(); ++q) {
+          if (jets[q])
+            append_number(text, nearest_double(jets[q]->value));
+          else
+            text += "-9999";
+          text += (q + 1) % static_cast<std::size_t>(g.nx) == 0 ? '\n' : ' ';
+        }
+      } else {
+        append_csv<K>(text, chunk, jets, job.derivatives);
+      }
+      write_text(output, text, name);
+      text.clear();
+    }
+  }
+  write_text(output, text, name);
+  output.flush();
+  if (!output)
+    throw std::runtime_error("cannot write '" + name + "'");
+
+  if (to_stdout)
+    return; // stdout holds the data only
+  const Counts& c = evaluator.counts();
+  const auto& f = evaluator.file();
+  std::ostringstream summary;
+  summary.precision(3);
+  summary << "spline " << job.input << ": " << f.domain.number_of_faces() << " patches of degree "
+          << (f.patches.empty() ? 0 : f.patches.front().degree()) << " (read in " << read_seconds
+          << " s, " << (job.exact ? "exact" : "double") << " arithmetic)\n"
+          << "evaluated " << c.points << " points (" << c.inside << " in the domain, " << c.outside
+          << " outside: " << job.outside << ") in " << evaluate_seconds << " s";
+  if (evaluate_seconds > 0)
+    summary << " (" << double(c.points) / evaluate_seconds << " points/s)";
+  summary << "\nwrote " << job.output << " ("
+          << (ascii_grid ? "ESRI ASCII grid"
+                         : "CSV, derivatives " + std::to_string(job.derivatives))
+          << ")\n";
+  out << summary.str();
+}
+
+} // namespace
+
+double ascii_grid_cellsize(const Eval_grid& g) {
+  const double dx = g.nx > 1 ? (g.xmax - g.xmin) / double(g.nx - 1) : 0;
+  const double dy = g.ny > 1 ? (g.ymax - g.ymin) / double(g.ny - 1) : 0;
+  if (dx == 0 && dy == 0)
+    throw Usage_error("an ESRI ASCII grid needs NX > 1 or NY > 1 (its cell size comes from the "
+                      "node spacing)");
+  if (dx > 0 && dy > 0 && std::abs(dx - dy) > 1e-9 * (std::max)(dx, dy)) {
+    std::ostringstream message;
+    message.precision(17);
+    message << "an ESRI ASCII grid has square cells, but the x spacing " << dx
+            << " differs from the y spacing " << dy
+            << ": choose NX, NY with (XMAX-XMIN)/(NX-1) = (YMAX-YMIN)/(NY-1), or write CSV";
+    throw Usage_error(message.str());
+  }
+  return dx > 0 ? dx : dy;
+}
+
+void run_eval_job(const Eval_job& job, std::ostream& out) {
+  if (job.exact)
+    run<Exact>(job, out);
+  else
+    run<Fast>(job, out);
+}
+
+} // namespace tspline
