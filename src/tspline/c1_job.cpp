@@ -77,28 +77,6 @@ Json point_json(const Point_2& p) {
 }
 
 template <class K>
-std::vector<typename K::Point_2> read_queries(const std::string& path) {
-  std::ifstream in = open_input(path);
-  std::vector<typename K::Point_2> points;
-  std::string line;
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
-    const std::vector<std::string> tokens = TS::internal::tokens_of_line(line);
-    if (tokens.empty())
-      continue;
-    if (tokens.size() != 2)
-      throw TS::Invalid_input(path + ":" + std::to_string(number) + ": expected 'x y', got " +
-                              std::to_string(tokens.size()) + " fields");
-    try {
-      points.emplace_back(TS::parse_number<typename K::FT>(tokens[0]),
-                          TS::parse_number<typename K::FT>(tokens[1]));
-    } catch (const TS::Invalid_input& e) {
-      throw TS::Invalid_input(path + ":" + std::to_string(number) + ": " + e.what());
-    }
-  }
-  return points;
-}
-
-template <class K>
 Json run(const C1_job& job, std::ostream& out) {
   using Spline = TS::C1_quintic_spline<K>;
   Stopwatch clock, total;
@@ -296,7 +274,8 @@ Json run(const C1_job& job, std::ostream& out) {
   if (!job.query.empty()) {
     if (job.values.empty())
       throw TS::Invalid_input("--query needs --values OUT.txt for the results");
-    const auto queries = read_queries<K>(job.query);
+    std::ifstream query_file = open_input(job.query);
+    const auto queries = TS::read_query_points<K>(query_file, job.query);
     const TS::Domain_locator<K> locator(d);
     const std::vector<double> values = TS::evaluate_functional(d, locator, patch, queries);
     std::ofstream file = open_output(job.values);

@@ -10,6 +10,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Triangular_spline/Domain_locator.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
 #include <CGAL/Triangular_spline/IO/text_tokens.h>
 #include <CGAL/Triangular_spline/evaluate.h>
@@ -34,31 +35,6 @@ using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
 
 // Points per evaluation chunk: bounds memory for large grids, output streams as it goes.
 constexpr std::size_t chunk_size = 1 << 16;
-
-template <class K>
-std::vector<typename K::Point_2> read_query_points(const std::string& path) {
-  std::ifstream in = open_input(path);
-  std::vector<typename K::Point_2> points;
-  std::string line;
-  for (std::size_t number = 1; std::getline(in, line); ++number) {
-    const std::vector<std::string> tokens = TS::internal::tokens_of_line(line);
-    if (tokens.empty())
-      continue;
-    if (tokens.size() != 2 && tokens.size() != 3)
-      throw TS::Invalid_input(path + ":" + std::to_string(number) +
-                              ": expected 'x y' (or 'x y z'), got " +
-                              std::to_string(tokens.size()) + " fields");
-    try {
-      points.emplace_back(TS::parse_number<typename K::FT>(tokens[0]),
-                          TS::parse_number<typename K::FT>(tokens[1]));
-    } catch (const TS::Invalid_input& e) {
-      throw TS::Invalid_input(path + ":" + std::to_string(number) + ": " + e.what());
-    }
-  }
-  if (in.bad())
-    throw std::runtime_error("read error on '" + path + "'");
-  return points;
-}
 
 // Node i of n from low to high; the last node is `high` exactly.
 double node(double low, double high, long long i, long long n) {
@@ -203,8 +179,10 @@ void run(const Eval_job& job, std::ostream& out) {
 
   // Queries first: a bad query file leaves no half-written output behind.
   std::vector<Point_2> points;
-  if (!job.use_grid)
-    points = read_query_points<K>(job.query);
+  if (!job.use_grid) {
+    std::ifstream query_file = open_input(job.query);
+    points = TS::read_query_points<K>(query_file, job.query);
+  }
 
   const bool to_stdout = job.output == "-";
   const bool ascii_grid = job.use_grid && lowercase_extension(job.output) == "asc";

@@ -883,8 +883,8 @@ TEST(LocalFit, CurvatureOfExpSinHasTheRightSignAlmostEverywhere) {
   }
   CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
   std::vector<CGAL::Delaunay_triangulation_2<Epick>::Vertex_handle> handles;
-  const auto domain =
-      TS::domain_from_triangulation_2<Epick>(dt, [](auto) { return true; }, handles);
+  const auto domain = TS::domain_from_triangulation_2<Epick>(
+      dt, [](auto) { return true; }, handles);
   std::vector<double> z;
   for (const auto& p : domain.points())
     z.push_back(std::exp(p.x()) * std::sin(2 * p.y()));

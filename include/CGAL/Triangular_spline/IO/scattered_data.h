@@ -178,6 +178,38 @@ delaunay_domain(const Scattered_data<GeomTraits>& data) {
   return {std::move(domain), std::move(values)};
 }
 
+/*!
+  \ingroup PkgTriangularSplineIO
+  \brief reads query points, `x y` per line (a third column, as in `.xyz` files, is
+  ignored; `#` starts a comment; blank lines are skipped), parsed as `GeomTraits::FT`
+  (exactly for exact number types).
+  \throws Invalid_input naming `name` and the line for a malformed line or number
+*/
+template <class GeomTraits>
+std::vector<typename GeomTraits::Point_2> read_query_points(std::istream& in,
+                                                            const std::string& name) {
+  using FT = typename GeomTraits::FT;
+  std::vector<typename GeomTraits::Point_2> points;
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    const std::vector<std::string> tokens = internal::tokens_of_line(line);
+    if (tokens.empty())
+      continue;
+    if (tokens.size() != 2 && tokens.size() != 3)
+      throw Invalid_input(name + ":" + std::to_string(number) +
+                          ": expected 'x y' (or 'x y z'), got " + std::to_string(tokens.size()) +
+                          " fields");
+    try {
+      points.emplace_back(parse_number<FT>(tokens[0]), parse_number<FT>(tokens[1]));
+    } catch (const Invalid_input& e) {
+      throw Invalid_input(name + ":" + std::to_string(number) + ": " + e.what());
+    }
+  }
+  if (in.bad())
+    throw Invalid_input("read error on '" + name + "'");
+  return points;
+}
+
 } // namespace Triangular_spline
 } // namespace CGAL
 
