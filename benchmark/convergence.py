@@ -136,7 +136,7 @@ def main():
         for ax, (name, errors) in zip(axes, curves.items()):
             for c, e in errors.items():
                 ax.loglog(hs, e, "o-", label=c)
-            for p, style in ((2, ":"), (4, "--")):
+            for p, style in ((2, ":"), (4, "--"), (6, "-.")):
                 ref = [errors[columns[0]][0] * (h / hs[0]) ** p for h in hs]
                 ax.loglog(hs, ref, "k" + style, lw=0.8, label=f"O(h^{p})")
             ax.set_xlabel("h")

@@ -36,6 +36,13 @@ for fit in local tangent; do
     --mode curvature --view 0,90 --size 400x300 --range 1 >/dev/null
 done
 
+# The convergence plot of the manual, where python3-numpy (and, for its reference curve,
+# python3-scipy) are installed: python3-matplotlib draws it.
+if /usr/bin/python3 -c "import numpy, matplotlib" 2>/dev/null; then
+  /usr/bin/python3 benchmark/convergence.py --tspline "$tspline" --fits local,local:3,tangent \
+    --plot "$fig/convergence.png" >/dev/null
+fi
+
 # One figure for each of Mann's and Fang's sections of the manual.
 "$tspline" mann --input data/franke_100.xyz --mesh "$work/mann.ply" >/dev/null
 "$tspline" render --input "$work/mann.ply" --out "$fig/mann_franke.png" --size 480x360 >/dev/null

@@ -910,3 +910,20 @@ TEST(LocalFit, CurvatureOfExpSinHasTheRightSignAlmostEverywhere) {
   EXPECT_GT(inside, 38000u);
   EXPECT_GE(double(negative), 0.99 * double(inside)) << negative << " of " << inside;
 }
+
+TEST(LocalFit, ThreadsDoNotChangeTheResult) {
+  const auto domain = random_delaunay<Epick>(3000, 12);
+  std::vector<double> z;
+  for (const auto& p : domain.points())
+    z.push_back(std::sin(0.2 * p.x()) * std::cos(0.3 * p.y()));
+  const TS::Local_polynomials<Epick> one(domain, z, 5, TS::Degree_selection::Cross_validation, 1);
+  const TS::Local_polynomials<Epick> three(domain, z, 5, TS::Degree_selection::Cross_validation, 3);
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    ASSERT_EQ(one.degree(v), three.degree(v)) << v;
+    const auto g1 = one.gradient(v), g3 = three.gradient(v);
+    ASSERT_EQ(g1[0], g3[0]) << v;
+    ASSERT_EQ(g1[1], g3[1]) << v;
+    const Epick::Point_2 q(domain.point(v).x() + 0.25, domain.point(v).y() - 0.5);
+    ASSERT_EQ(one.value(v, q), three.value(v, q)) << v;
+  }
+}
