@@ -54,10 +54,13 @@ int run_mann(const std::vector<std::string>& args) {
       "Builds Mann's simple interpolant: derivatives up to order floor(2n/3) are estimated at "
       "every data point by local polynomial least squares (an estimate: exact only for data from "
       "a polynomial of that degree), each patch's control points are set from the Taylor "
-      "polynomial of the nearest vertex (averaged on ties), giving a C^0 network with "
-      "polynomial precision of degree n, and the averaging adjustment raises it to "
+      "polynomial of the nearest vertex (averaged on ties), giving a C^0 network, and the "
+      "averaging adjustment raises it to "
       "C^floor((n-1)/4) (C^1 for the default quintic). The result is certified C^1 (exactly "
-      "with --exact).");
+      "with --exact). Precision: data from a polynomial of degree floor(2n/3) (3 for the "
+      "default quintic) are reproduced exactly, since the estimated derivatives are then "
+      "exact; Mann's degree-n precision needs exact derivatives, which scattered data do not "
+      "give. Evaluate a saved network with 'tspline eval'.");
   parser.describe("Input: '.xyz' (one 'x y z' per line, Delaunay triangulation of (x, y)) or a "
                   "triangle mesh (.off/.obj/.ply/.stl) whose vertex (x, y) is the domain and z "
                   "the height.");
