@@ -121,6 +121,14 @@ Planar_domain<K> random_delaunay(int n, unsigned seed) {
 }
 
 template <class K>
+Planar_domain<K> delaunay_of(const std::vector<typename K::Point_2>& points) {
+  CGAL::Delaunay_triangulation_2<K> dt(points.begin(), points.end());
+  std::vector<typename CGAL::Delaunay_triangulation_2<K>::Vertex_handle> handles;
+  return TS::domain_from_triangulation_2<K>(
+      dt, [](auto) { return true; }, handles);
+}
+
+template <class K>
 std::vector<std::pair<std::string, Planar_domain<K>>> all_domains() {
   return {{"random Delaunay", random_delaunay<K>(40, 7)},
           {"L with hole", l_shape_with_hole<K>()},
@@ -625,10 +633,7 @@ TEST(LocalFit, SmallSetsDegradeToLowerDegreesAndStayLinearExact) {
   linear.set_coefficient(1, 0, FT(-2) / FT(7));
   linear.set_coefficient(0, 1, FT(5));
   for (const auto& points : sets) {
-    CGAL::Delaunay_triangulation_2<Exact_kernel> dt(points.begin(), points.end());
-    std::vector<CGAL::Delaunay_triangulation_2<Exact_kernel>::Vertex_handle> handles;
-    const auto domain = TS::domain_from_triangulation_2<Exact_kernel>(
-        dt, [](auto) { return true; }, handles);
+    const auto domain = delaunay_of<Exact_kernel>(points);
     C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
     const TS::Fit_statistics statistics =
         TS::fit_vertex_data(spline, sample(domain, linear), Fit::Local_polynomial, 5);
@@ -651,10 +656,7 @@ TEST(LocalFit, ResultDoesNotDependOnTheInputOrder) {
   std::sort(points.begin(), points.end());
   points.erase(std::unique(points.begin(), points.end()), points.end());
   auto values_at = [&](std::vector<Exact_kernel::Point_2> order) {
-    CGAL::Delaunay_triangulation_2<Exact_kernel> dt(order.begin(), order.end());
-    std::vector<CGAL::Delaunay_triangulation_2<Exact_kernel>::Vertex_handle> handles;
-    const auto domain = TS::domain_from_triangulation_2<Exact_kernel>(
-        dt, [](auto) { return true; }, handles);
+    const auto domain = delaunay_of<Exact_kernel>(order);
     std::vector<Exact_kernel::FT> z;
     for (const auto& p : domain.points()) // a non-polynomial function of the point
       z.push_back(p.x() * p.x() * p.y() / (1 + p.y() * p.y()) + p.x());
@@ -709,10 +711,7 @@ TEST(LocalFit, ConvergesWithOrderAboveThreeAndAHalf) {
         points.emplace_back(double(i) / n + (i == 0 || i == n ? 0 : dx),
                             double(j) / n + (j == 0 || j == n ? 0 : dy));
       }
-    CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
-    std::vector<CGAL::Delaunay_triangulation_2<Epick>::Vertex_handle> handles;
-    const auto domain = TS::domain_from_triangulation_2<Epick>(
-        dt, [](auto) { return true; }, handles);
+    const auto domain = delaunay_of<Epick>(points);
     std::vector<double> z;
     for (const auto& p : domain.points())
       z.push_back(f(p.x(), p.y()));
@@ -847,20 +846,14 @@ TEST(StablePropagation, FourNearlyCollinearDecimalPointsDoNotCrash) {
                                             {decimal("0.8"), decimal("0.4")},
                                             {decimal("1.2"), decimal("0.5999999999999")},
                                             {decimal("1.6"), decimal("0.8")}};
-  CGAL::Delaunay_triangulation_2<Exact_kernel> dt(points.begin(), points.end());
-  std::vector<CGAL::Delaunay_triangulation_2<Exact_kernel>::Vertex_handle> handles;
-  const auto domain = TS::domain_from_triangulation_2<Exact_kernel>(
-      dt, [](auto) { return true; }, handles);
+  const auto domain = delaunay_of<Exact_kernel>(points);
   C1_quintic_spline<Exact_kernel> exact(domain, Corner_frame::Corner_and_two_stars);
   TS::fit_vertex_data(exact, std::vector<FT>{0, 1, 2, 3}, Fit::Local_polynomial);
   EXPECT_TRUE(certify(exact).certified);
   std::vector<Epick::Point_2> fast_points;
   for (const auto& p : points)
     fast_points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-  CGAL::Delaunay_triangulation_2<Epick> fast_dt(fast_points.begin(), fast_points.end());
-  std::vector<CGAL::Delaunay_triangulation_2<Epick>::Vertex_handle> fast_handles;
-  const auto fast_domain = TS::domain_from_triangulation_2<Epick>(
-      fast_dt, [](auto) { return true; }, fast_handles);
+  const auto fast_domain = delaunay_of<Epick>(fast_points);
   for (Fit fit : {Fit::Local_polynomial, Fit::Tangent_planes, Fit::Interpolate}) {
     C1_quintic_spline<Epick> fast(fast_domain, Corner_frame::Corner_and_two_stars);
     EXPECT_NO_THROW(TS::fit_vertex_data(fast, std::vector<double>{0, 1, 2, 3}, fit));
@@ -881,10 +874,7 @@ TEST(LocalFit, CurvatureOfExpSinHasTheRightSignAlmostEverywhere) {
     const double x = uniform(engine);
     points.emplace_back(x, uniform(engine));
   }
-  CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
-  std::vector<CGAL::Delaunay_triangulation_2<Epick>::Vertex_handle> handles;
-  const auto domain = TS::domain_from_triangulation_2<Epick>(
-      dt, [](auto) { return true; }, handles);
+  const auto domain = delaunay_of<Epick>(points);
   std::vector<double> z;
   for (const auto& p : domain.points())
     z.push_back(std::exp(p.x()) * std::sin(2 * p.y()));
