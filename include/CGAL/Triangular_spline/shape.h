@@ -55,7 +55,8 @@ enum class Fit {
   /// polynomial (`Local_polynomials`, degree 3 by default) of its nearest corner, averaged
   /// on ties. All points of a corner region, and every corner-inner and edge-middle point,
   /// then come from one polynomial, so propagation through them reproduces it whatever its
-  /// weights; only the flip points of an edge mix the polynomials of its two ends. Data
+  /// weights; only flip points and re-routed edge points mix the polynomials of
+  /// neighbouring vertices. Data
   /// from a polynomial of degree at most the local degree are reproduced exactly (exactly
   /// with an exact number type); local in time and memory. Needs
   /// `Corner_frame::Corner_and_two_stars`
@@ -192,6 +193,16 @@ void least_squares_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
 
 /*!
   \ingroup PkgTriangularSplineSplines
+  \brief what `fit_vertex_data()` did: the degrees of the local polynomials
+  (`Local_polynomial` and `Least_squares` fits; all zero otherwise).
+*/
+struct Fit_statistics {
+  /// `vertices_by_degree[d]`: the number of vertices whose local polynomial has degree `d`
+  std::array<std::size_t, 6> vertices_by_degree{};
+};
+
+/*!
+  \ingroup PkgTriangularSplineSplines
   \brief sets every free control point of `spline` from the data `values` (one per domain
   vertex) according to `fit`, then propagates, and returns what it did.
 
@@ -203,16 +214,6 @@ void least_squares_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
   \throws Invalid_input if `values` has the wrong size or a non-finite value, or if a fit
   other than `Approximate` is asked of a spline whose corner points are not free.
 */
-/*!
-  \ingroup PkgTriangularSplineSplines
-  \brief what `fit_vertex_data()` did: the degrees of the local polynomials
-  (`Local_polynomial` and `Least_squares` fits; all zero otherwise).
-*/
-struct Fit_statistics {
-  /// `vertices_by_degree[d]`: the number of vertices whose local polynomial has degree `d`
-  std::array<std::size_t, 6> vertices_by_degree{};
-};
-
 template <class GeomTraits, class Value>
 Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
                                const std::vector<Value>& values, Fit fit, int local_degree = 3,
