@@ -81,6 +81,15 @@ typename K::FT ratio(int p, int q) {
   return typename K::FT(p) / typename K::FT(q);
 }
 
+// A callable that reads `text` as a spline file named "s.spline" (for throws_with()).
+template <class K>
+std::function<void()> spline_reading(const std::string& text) {
+  return [text] {
+    std::istringstream in(text);
+    CGAL::Triangular_spline::read_spline_file<K>(in, "s.spline");
+  };
+}
+
 } // namespace
 
 // ---------------------------------------------------------------------------------------
@@ -751,12 +760,7 @@ TYPED_TEST(SplineFile, MalformedFilesAreRejectedWithTheLine) {
                            "faces 2\n0 1 2\n0 2 3\npatches\n"
                            // 14        15                 16
                            "1 2 3\n1/2 0.25 -7\nend\n";
-  auto read = [](const std::string& text) {
-    return [text] {
-      std::istringstream in(text);
-      TS::read_spline_file<K>(in, "s.spline");
-    };
-  };
+  const auto read = spline_reading<K>;
   auto replace = [&](const std::string& from, const std::string& to) {
     std::string s = good;
     const std::size_t at = s.find(from);
@@ -869,12 +873,7 @@ TYPED_TEST(SplineFile, CountsMustFitTheFile) {
   using K = TypeParam;
   const std::string good = "tspline-spline 1\ndegree 1\ndimension 1\nnumber_type exact\n"
                            "vertices 3\n0 0\n1 0\n0 1\nfaces 1\n0 1 2\npatches\n1 2 3\nend\n";
-  auto read = [](const std::string& text) {
-    return [text] {
-      std::istringstream in(text);
-      TS::read_spline_file<K>(in, "s.spline");
-    };
-  };
+  const auto read = spline_reading<K>;
   auto replace = [&](const std::string& from, const std::string& to) {
     std::string s = good;
     return s.replace(s.find(from), from.size(), to);
