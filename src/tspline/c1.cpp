@@ -25,7 +25,9 @@ int run_c1(const std::vector<std::string>& args) {
   parser.add_option("fit", "MODE",
                     "local (interpolate; every prescribed point from the local polynomial of its "
                     "nearest vertex, a weighted least-squares fit of degree up to --degree: "
-                    "reproduces polynomials of that degree where the data determine them), lsq "
+                    "reproduces polynomials of that degree where the data determine them), energy "
+                    "(interpolate with the least thin-plate energy: the fairest surface, best on "
+                    "sparse data), lsq "
                     "(interpolate; all control points closest to the local "
                     "polynomials, global solve), tangent (interpolate values and estimated "
                     "gradients), interpolate (corners through the data, polar blend elsewhere), "
@@ -39,6 +41,10 @@ int run_c1(const std::vector<std::string>& args) {
                     "how each vertex's degree is chosen: cv (leave-one-out cross-validation, "
                     "the lowest degree predicting nearly as well as the best) or largest",
                     "cv");
+  parser.add_option("smoothing", "LAMBDA",
+                    "with --fit energy: stop interpolating and minimise sum of squared residuals "
+                    "+ LAMBDA h^2 thin-plate energy (h^2 the area per data point; 0 interpolates)",
+                    "0");
   parser.add_option("fix", "FIX",
                     "degenerate frames: reroute (local re-routing) or perturb "
                     "(move vertices slightly)",
@@ -67,6 +73,7 @@ int run_c1(const std::vector<std::string>& args) {
   job.levels = static_cast<int>(parsed.integer("levels"));
   job.degree = static_cast<int>(parsed.integer_in("degree", 0, 5));
   job.degree_selection = parsed.value("degree-selection");
+  job.smoothing = parsed.number("smoothing");
   for (const auto& [name, field] : {std::pair<const char*, std::string*>{"report", &job.report},
                                     {"mesh", &job.mesh},
                                     {"save", &job.save},

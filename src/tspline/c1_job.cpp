@@ -109,6 +109,8 @@ Json run(const C1_job& job, std::ostream& out) {
                       : job.fit == "tangent"   ? TS::Fit::Tangent_planes
                       : job.fit == "lsq"       ? TS::Fit::Least_squares
                       : job.fit == "local"     ? TS::Fit::Local_polynomial
+                      : job.fit == "energy"    ? TS::Fit::Minimal_energy
+                      : job.fit == "adaptive"  ? TS::Fit::Adaptive
                                                : TS::Fit::Approximate;
   progress("c1", "building the plan of " + std::to_string(domain.number_of_faces()) + " patches",
            large);
@@ -120,7 +122,8 @@ Json run(const C1_job& job, std::ostream& out) {
   const TS::Fit_statistics fit_statistics = TS::fit_vertex_data(
       spline, input.values, fit, job.degree,
       job.degree_selection == "largest" ? TS::Degree_selection::Largest
-                                        : TS::Degree_selection::Cross_validation);
+                                        : TS::Degree_selection::Cross_validation,
+      job.smoothing);
   timings.set("fit_and_propagate", clock.lap());
 
   const auto& d = spline.domain();
@@ -156,6 +159,10 @@ Json run(const C1_job& job, std::ostream& out) {
     interpolation_error = (std::max)(
         interpolation_error, std::abs(CGAL::to_double(spline.value(spline.vertex_slot(v))) - z));
   }
+  // The fairness measure the energy fit minimises, reported for every fit to compare them.
+  double thin_plate = 0;
+  for (std::uint32_t f = 0; f < d.number_of_faces(); ++f)
+    thin_plate += CGAL::to_double(TS::thin_plate_energy(spline.patch(f)));
   double sampled_min = data_min, sampled_max = data_max;
   for (std::uint32_t f = 0; f < d.number_of_faces(); ++f) {
     const auto& t = d.face(f);
@@ -183,7 +190,10 @@ Json run(const C1_job& job, std::ostream& out) {
   report.set("number_type", job.exact ? "exact" : "double");
   report.set("fit", job.fit);
   report.set("fix", job.fix);
-  if (fit == TS::Fit::Local_polynomial || fit == TS::Fit::Least_squares) {
+  if (fit == TS::Fit::Minimal_energy)
+    report.set("smoothing", job.smoothing);
+  if (fit == TS::Fit::Local_polynomial || fit == TS::Fit::Least_squares ||
+      fit == TS::Fit::Adaptive) {
     Json local = Json::object();
     local.set("max_degree", job.degree);
     local.set("degree_selection", job.degree_selection);
@@ -191,6 +201,13 @@ Json run(const C1_job& job, std::ostream& out) {
     for (std::size_t count : fit_statistics.vertices_by_degree)
       by_degree.push_back(count);
     local.set("vertices_by_degree", by_degree);
+    if (fit == TS::Fit::Adaptive) {
+      // How much of the surface follows the local polynomials and how much the energy.
+      const auto& trust = fit_statistics.vertices_by_trust;
+      local.set("vertices_trusted", trust[0]);
+      local.set("vertices_blended", trust[1]);
+      local.set("vertices_minimal_energy", trust[2]);
+    }
     report.set("local_polynomials", local);
   }
   report.set("vertices", d.number_of_vertices());
@@ -208,6 +225,7 @@ Json run(const C1_job& job, std::ostream& out) {
                                                        : spline.degenerate_frames().size());
   report.set("degenerate_frames_numerical", numerical_frames);
   report.set("max_interpolation_error", interpolation_error);
+  report.set("thin_plate_energy", thin_plate);
   auto range = [](double lo, double hi) {
     Json a = Json::array();
     a.push_back(lo);
@@ -321,8 +339,14 @@ Json run(const C1_job& job, std::ostream& out) {
     if (rank_dimension)
       out << " (exact rank dimension " << *rank_dimension << ")";
     out << "\n  fit: " << job.fit << ", arithmetic: " << (job.exact ? "exact rationals" : "double")
-        << ", largest interpolation error: " << interpolation_error << "\n"
-        << "  data range [" << data_min << ", " << data_max << "], surface range (sampled) ["
+        << ", largest interpolation error: " << interpolation_error << "\n";
+    if (fit == TS::Fit::Adaptive) {
+      const auto& trust = fit_statistics.vertices_by_trust;
+      out << "  vertices following their local polynomial: " << trust[0]
+          << ", blended with the minimal-energy surface: " << trust[1]
+          << ", minimal energy only: " << trust[2] << "\n";
+    }
+    out << "  data range [" << data_min << ", " << data_max << "], surface range (sampled) ["
         << sampled_min << ", " << sampled_max << "]\n"
         << "  " << certificate.summary();
     if (!certificate.exact)
@@ -395,9 +419,15 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
 
 Json run_c1_job(const C1_job& job, std::ostream& out) {
   if (job.fit != "approximate" && job.fit != "interpolate" && job.fit != "tangent" &&
-      job.fit != "lsq" && job.fit != "local")
-    throw Usage_error("--fit must be local, lsq, tangent, interpolate or approximate, not '" +
-                      job.fit + "'");
+      job.fit != "lsq" && job.fit != "local" && job.fit != "energy" &&
+      job.fit != "adaptive")
+    throw Usage_error(
+        "--fit must be local, energy, lsq, tangent, interpolate or approximate, not '" + job.fit +
+        "'");
+  if (!(job.smoothing >= 0) || !std::isfinite(job.smoothing))
+    throw Usage_error("--smoothing must be a finite number >= 0");
+  if (job.smoothing > 0 && job.fit != "energy")
+    throw Usage_error("--smoothing needs --fit energy");
   if (job.degree_selection != "cv" && job.degree_selection != "largest")
     throw Usage_error("--degree-selection must be cv or largest, not '" + job.degree_selection +
                       "'");

@@ -102,6 +102,7 @@ public:
                           std::to_string(max_degree));
     const std::size_t V = domain.number_of_vertices();
     m_degree.assign(V, 0);
+    m_resolution.assign(V, 1.0);
     m_scale.assign(V, FT(1));
     m_coefficients.assign(V * coefficients_per_vertex, Value_traits<Value>::zero());
     // The fits are independent: one thread per core on large inputs (each vertex's result
@@ -126,6 +127,17 @@ public:
 
   /// returns the degree \f$d_v\f$ chosen at vertex `v`.
   int degree(Index v) const { return m_degree[v]; }
+  /*!
+    returns how well the data around `v` are resolved: the root of the ratio of the
+    leave-one-out mean square residual of \f$p_v\f$ to that of the best plane through
+    \f$(v, z_v)\f$ (both over their own rings, weighted as the fits), in [0, 1]. 0 when
+    \f$p_v\f$ predicts every left-out neighbour exactly (data from a polynomial of degree
+    \f$d_v\f$, or from a plane); near 0 for smooth, densely sampled data (the ratio falls as
+    \f$h^{d_v - 1}\f$); near 1 when the polynomial predicts no better than a plane:
+    data too sparse for their features, noise, cliffs. 1 where no plane is determined.
+    Decided in `double` for every number type.
+  */
+  double resolution(Index v) const { return m_resolution[v]; }
   /// returns the largest degree asked for.
   int max_degree() const { return m_max_degree; }
 
@@ -273,24 +285,15 @@ private:
     const Point_2& c = domain.point(v);
     const double cx = CGAL::to_double(c.x()), cy = CGAL::to_double(c.y());
     struct Candidate {
-      int degree;
-      std::size_t n;
-      double scale, score;
+      int degree = -1;
+      std::size_t n = 0;
+      double scale = 0, score = 0;
       Eigen::MatrixXd x;
     };
-    boost::container::static_vector<Candidate, max_supported_degree> candidates;
-    for (int d = 1; d <= m_max_degree; ++d) {
+    // The weighted least-squares fit of degree d to the first n points of the rings, with
+    // its leave-one-out score; false if the neighbourhood does not determine it.
+    auto assess = [&](int d, std::size_t n, Candidate& candidate) {
       const int u = unknowns(d);
-      const std::size_t needed = d == 1 ? 2 : std::size_t((3 * u + 1) / 2);
-      // The fewest rings holding enough points (all of them if none does).
-      std::size_t n = work.points.size();
-      for (std::size_t end : work.ring_end)
-        if (end >= needed) {
-          n = end;
-          break;
-        }
-      if (n < needed)
-        break;
       // Scale: a power of two at least the largest distance, so |xi|, |eta| <= 1 and the
       // exact coordinates stay dyadic multiples of the data.
       double radius = 0;
@@ -300,7 +303,8 @@ private:
                             std::hypot(CGAL::to_double(p.x()) - cx, CGAL::to_double(p.y()) - cy));
       }
       if (!(radius > 0) || !std::isfinite(radius))
-        break;
+        return false; // candidate.degree stays -1: no higher degree either
+      candidate.degree = d;
       const double scale = std::exp2(std::ceil(std::log2(radius)));
       Eigen::MatrixXd A(Eigen::Index(n), u);
       Eigen::MatrixXd b(Eigen::Index(n), D);
@@ -322,23 +326,42 @@ private:
       // builds then solve exactly (a vertex of a valid domain always has a full-rank pair).
       qr.setThreshold(d == 1 ? 1e-14 : 1e-6);
       if (qr.rank() < u && !(exact && d == 1))
-        continue;
-      Candidate candidate{d, n, scale, 0, qr.solve(b)};
-      if (m_selection == Degree_selection::Cross_validation) {
-        // Leave-one-out residuals of weighted least squares: r_i / (1 - h_ii), h the hat
-        // matrix Q Q^T; their weighted mean square is the score of this degree.
-        const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(Eigen::Index(n), u);
-        const Eigen::MatrixXd residual = b - A * candidate.x;
-        double score = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-          const double leverage = Q.row(Eigen::Index(i)).squaredNorm();
-          if (!(1 - leverage > 1e-8)) {
-            score = std::numeric_limits<double>::infinity();
-            break;
-          }
-          score += residual.row(Eigen::Index(i)).squaredNorm() / ((1 - leverage) * (1 - leverage));
+        return false;
+      candidate = Candidate{d, n, scale, 0, qr.solve(b)};
+      // Leave-one-out residuals of weighted least squares: r_i / (1 - h_ii), h the hat
+      // matrix Q Q^T; their weighted mean square is the score of this degree.
+      const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(Eigen::Index(n), u);
+      const Eigen::MatrixXd residual = b - A * candidate.x;
+      double score = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double leverage = Q.row(Eigen::Index(i)).squaredNorm();
+        if (!(1 - leverage > 1e-8)) {
+          score = std::numeric_limits<double>::infinity();
+          break;
         }
-        candidate.score = score / weight_sum;
+        score += residual.row(Eigen::Index(i)).squaredNorm() / ((1 - leverage) * (1 - leverage));
+      }
+      candidate.score = score / weight_sum;
+      return true;
+    };
+    boost::container::static_vector<Candidate, max_supported_degree> candidates;
+    for (int d = 1; d <= m_max_degree; ++d) {
+      const int u = unknowns(d);
+      const std::size_t needed = d == 1 ? 2 : std::size_t((3 * u + 1) / 2);
+      // The fewest rings holding enough points (all of them if none does).
+      std::size_t n = work.points.size();
+      for (std::size_t end : work.ring_end)
+        if (end >= needed) {
+          n = end;
+          break;
+        }
+      if (n < needed)
+        break;
+      Candidate candidate;
+      if (!assess(d, n, candidate)) {
+        if (candidate.degree < 0)
+          break; // no extent: no higher degree either
+        continue;
       }
       candidates.push_back(std::move(candidate));
     }
@@ -363,6 +386,29 @@ private:
       for (chosen = 0; chosen + 1 < candidates.size(); ++chosen)
         if (candidates[chosen].score <= (std::max)(m_tie_ratio * best, floor))
           break;
+    }
+    // Resolution: leave-one-out score of the chosen degree against the plane's (degree 1 is
+    // the first candidate whenever a plane is determined).
+    {
+      double data_scale = 0;
+      for (Index w : work.points)
+        for (int k = 0; k < D; ++k)
+          data_scale = (std::max)(
+              data_scale, std::abs(CGAL::to_double(Value_traits<Value>::coordinate(values[w], k)) -
+                                   CGAL::to_double(Value_traits<Value>::coordinate(values[v], k))));
+      const double floor = 1e-24 * data_scale * data_scale;
+      // The plane on the chosen degree's own points: the same points, one model less rich.
+      Candidate flat;
+      const bool has_plane = candidates[chosen].degree == 1
+                                 ? (flat = candidates[chosen], true)
+                                 : assess(1, candidates[chosen].n, flat);
+      const double plane = flat.score, own = candidates[chosen].score;
+      if (!has_plane || !std::isfinite(plane))
+        m_resolution[v] = 1;
+      else if (!(own > floor))
+        m_resolution[v] = 0;
+      else
+        m_resolution[v] = (std::min)(1.0, std::sqrt(own / (std::max)(plane, floor)));
     }
     for (std::size_t k = chosen + 1; k-- > 0;) {
       const Candidate& candidate = candidates[k];
@@ -460,6 +506,7 @@ private:
   Degree_selection m_selection;
   double m_tie_ratio = 1.1;
   std::vector<int> m_degree;
+  std::vector<double> m_resolution;
   std::vector<FT> m_scale; // 1 / S_v
   std::vector<Value> m_coefficients;
 };
