@@ -53,12 +53,15 @@ int main(int argc, char* argv[]) {
 
   // The default fit of tspline c1: corners through the data, every other free point from
   // the local polynomial (degree up to 5, chosen by cross-validation) of its nearest
-  // vertex; propagate.
-  const TS::Fit_statistics fit = TS::fit_vertex_data(spline, heights, TS::Fit::Local_polynomial, 5);
+  // vertex where that polynomial resolves the data, from the least thin-plate energy where
+  // it does not; propagate.
+  const TS::Fit_statistics fit = TS::fit_vertex_data(spline, heights, TS::Fit::Adaptive, 5);
   std::cout << "local polynomial degrees 0..5 at";
   for (std::size_t count : fit.vertices_by_degree)
     std::cout << " " << count;
-  std::cout << " vertices\n";
+  std::cout << " vertices; " << fit.vertices_by_trust[0] << " follow their polynomial, "
+            << fit.vertices_by_trust[1] << " are blended with, " << fit.vertices_by_trust[2]
+            << " replaced by the least-energy surface\n";
 
   auto patch = [&](std::uint32_t f) { return spline.patch(f); };
   TS::C1_certificate certificate = TS::certify_C1(spline.domain(), patch);

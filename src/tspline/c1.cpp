@@ -22,19 +22,23 @@ int run_c1(const std::vector<std::string>& args) {
                   "triangle mesh (.off/.obj/.ply/.stl) whose vertex (x, y) is the domain and z "
                   "the height; holes and non-convex boundaries of a mesh are kept.");
   parser.add_option("input", "FILE", "scattered points (.xyz) or triangle mesh");
-  parser.add_option("fit", "MODE",
-                    "local (interpolate; every prescribed point from the local polynomial of its "
-                    "nearest vertex, a weighted least-squares fit of degree up to --degree: "
-                    "reproduces polynomials of that degree where the data determine them), energy "
-                    "(interpolate with the least thin-plate energy: the fairest surface, best on "
-                    "sparse data), lsq "
-                    "(interpolate; all control points closest to the local "
-                    "polynomials, global solve), tangent (interpolate values and estimated "
-                    "gradients), interpolate (corners through the data, polar blend elsewhere), "
-                    "approximate (Xu's polar blend of the vertex data)",
-                    "local");
+  parser.add_option(
+      "fit", "MODE",
+      "adaptive (interpolate; local polynomials where they resolve the data, "
+      "least thin-plate energy where they do not: accurate on dense and sparse "
+      "data), local (interpolate; every prescribed point from the local polynomial of its "
+      "nearest vertex, a weighted least-squares fit of degree up to --degree: "
+      "reproduces polynomials of that degree where the data determine them), energy "
+      "(interpolate with the least thin-plate energy: the fairest surface, best on "
+      "sparse data), lsq "
+      "(interpolate; all control points closest to the local "
+      "polynomials, global solve), tangent (interpolate values and estimated "
+      "gradients), interpolate (corners through the data, polar blend elsewhere), "
+      "approximate (Xu's polar blend of the vertex data)",
+      "adaptive");
   parser.add_option("degree", "D",
-                    "largest degree of the local polynomial fits of --fit local and lsq (0..5; "
+                    "largest degree of the local polynomial fits of --fit adaptive, local and "
+                    "lsq (0..5; "
                     "lowered where the neighbourhood does not determine it)",
                     "5");
   parser.add_option("degree-selection", "RULE",

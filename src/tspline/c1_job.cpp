@@ -207,6 +207,7 @@ Json run(const C1_job& job, std::ostream& out) {
       local.set("vertices_trusted", trust[0]);
       local.set("vertices_blended", trust[1]);
       local.set("vertices_minimal_energy", trust[2]);
+      local.set("energy_skipped", fit_statistics.energy_skipped);
     }
     report.set("local_polynomials", local);
   }
@@ -345,6 +346,9 @@ Json run(const C1_job& job, std::ostream& out) {
       out << "  vertices following their local polynomial: " << trust[0]
           << ", blended with the minimal-energy surface: " << trust[1]
           << ", minimal energy only: " << trust[2] << "\n";
+      if (fit_statistics.energy_skipped)
+        out << "  (more than 10^4 vertices poorly resolved: the energy solve was skipped and "
+               "every vertex follows its local polynomial; --fit energy solves it globally)\n";
     }
     out << "  data range [" << data_min << ", " << data_max << "], surface range (sampled) ["
         << sampled_min << ", " << sampled_max << "]\n"
@@ -355,7 +359,8 @@ Json run(const C1_job& job, std::ostream& out) {
   if (overshoots)
     std::cerr << "tspline c1: warning: the surface leaves the data range [" << data_min << ", "
               << data_max << "] by " << overshoot << " (more than 10% of its span) at sampled "
-              << "points; a lower --degree or --fit tangent overshoots less\n";
+              << "points; for noisy data use --fit energy --smoothing 1, a lower --degree "
+                 "overshoots less\n";
   if (!job.report.empty()) {
     std::ofstream file = open_output(job.report);
     report.write(file);
@@ -419,11 +424,10 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
 
 Json run_c1_job(const C1_job& job, std::ostream& out) {
   if (job.fit != "approximate" && job.fit != "interpolate" && job.fit != "tangent" &&
-      job.fit != "lsq" && job.fit != "local" && job.fit != "energy" &&
-      job.fit != "adaptive")
-    throw Usage_error(
-        "--fit must be local, energy, lsq, tangent, interpolate or approximate, not '" + job.fit +
-        "'");
+      job.fit != "lsq" && job.fit != "local" && job.fit != "energy" && job.fit != "adaptive")
+    throw Usage_error("--fit must be adaptive, local, energy, lsq, tangent, interpolate or "
+                      "approximate, not '" +
+                      job.fit + "'");
   if (!(job.smoothing >= 0) || !std::isfinite(job.smoothing))
     throw Usage_error("--smoothing must be a finite number >= 0");
   if (job.smoothing > 0 && job.fit != "energy")

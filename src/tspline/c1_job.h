@@ -13,9 +13,10 @@
 namespace tspline {
 
 struct C1_job {
-  std::string input;         // .xyz scattered data or a mesh (OFF/OBJ/PLY/STL); empty: demo data
-  std::string fit = "local"; // local | energy | lsq | tangent | interpolate | approximate
-  int degree = 5;            // largest degree of the local polynomials (local, lsq)
+  std::string input; // .xyz scattered data or a mesh (OFF/OBJ/PLY/STL); empty: demo data
+  std::string fit =
+      "adaptive"; // adaptive | local | energy | lsq | tangent | interpolate | approximate
+  int degree = 5; // largest degree of the local polynomials (local, lsq)
   std::string degree_selection = "cv"; // cv (cross-validation) | largest
   double smoothing = 0;                // energy fit: lambda of misfit + lambda h^2 energy
   std::string fix = "reroute";         // reroute | perturb

@@ -34,7 +34,7 @@ int run_demo(const std::vector<std::string>& args) {
 
   C1_job job;
   job.exact = true;
-  job.fit = "local"; // interpolation, control points from local quintic fits
+  job.fit = "adaptive"; // local quintic fits where they resolve the data, least energy elsewhere
   job.levels = static_cast<int>(parsed.integer("levels"));
   job.dimension = true;
   job.mesh = (dir / "demo_surface.ply").string();

@@ -917,3 +917,257 @@ TEST(LocalFit, ThreadsDoNotChangeTheResult) {
     ASSERT_EQ(one.value(v, q), three.value(v, q)) << v;
   }
 }
+
+namespace {
+
+template <class K, class Value>
+typename K::FT spline_energy(const C1_quintic_spline<K, Value>& spline) {
+  typename K::FT energy(0);
+  for (Index f = 0; f < spline.domain().number_of_faces(); ++f)
+    energy = energy + TS::thin_plate_energy(spline.patch(f));
+  return energy;
+}
+
+template <class K>
+typename K::FT domain_area(const Planar_domain<K>& domain) {
+  typename K::FT area(0);
+  for (Index f = 0; f < domain.number_of_faces(); ++f) {
+    const auto& t = domain.face(f);
+    area = area + CGAL::area(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+  }
+  return area;
+}
+
+std::vector<Epick::Point_2> jittered_grid(int n, unsigned seed) {
+  std::mt19937 engine{seed};
+  std::uniform_real_distribution<double> jitter(-0.25 / n, 0.25 / n);
+  std::vector<Epick::Point_2> points;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double dx = jitter(engine), dy = jitter(engine);
+      points.emplace_back(double(i) / n + (i == 0 || i == n ? 0 : dx),
+                          double(j) / n + (j == 0 || j == n ? 0 : dy));
+    }
+  return points;
+}
+
+} // namespace
+
+TEST(ThinPlateEnergy, IsExactOnQuadraticsAndZeroOnLinearFunctions) {
+  // A quadratic a x^2 + b xy + c y^2 + linear part has f_xx = 2a, f_xy = b, f_yy = 2c: its
+  // energy over any domain is area * (4a^2 + 2b^2 + 4c^2), exactly. The local fit reproduces
+  // it, so its patches are the quadratic, each in its own triangle's Bernstein basis.
+  using FT = Exact_kernel::FT;
+  const auto domain = random_delaunay<Exact_kernel>(30, 4);
+  Random_rationals random(21);
+  auto quadratic = random.polynomial<Exact_kernel>(2);
+  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(spline, sample(domain, quadratic), Fit::Local_polynomial, 2);
+  ASSERT_TRUE(reproduces(spline, quadratic));
+  const FT a = quadratic.coefficient(2, 0), b = quadratic.coefficient(1, 1),
+           c = quadratic.coefficient(0, 2);
+  EXPECT_EQ(spline_energy(spline), domain_area(domain) * (4 * a * a + 2 * b * b + 4 * c * c));
+  for (auto [h, k] : {std::pair{2, 0}, std::pair{1, 1}, std::pair{0, 2}})
+    quadratic.set_coefficient(h, k, FT(0));
+  TS::fit_vertex_data(spline, sample(domain, quadratic), Fit::Local_polynomial, 2);
+  EXPECT_EQ(spline_energy(spline), FT(0));
+  // The matrix is symmetric and the same under a rotation by a right angle.
+  const Exact_kernel::Point_2 p(0, 0), q(3, 1), r(1, 2);
+  const auto G = TS::thin_plate_energy_matrix(5, p, q, r);
+  const auto R = TS::thin_plate_energy_matrix(
+      5, Exact_kernel::Point_2(0, 0), Exact_kernel::Point_2(-1, 3), Exact_kernel::Point_2(-2, 1));
+  for (std::size_t i = 0; i < 21; ++i)
+    for (std::size_t j = 0; j < 21; ++j) {
+      EXPECT_EQ(G[i * 21 + j], G[j * 21 + i]);
+      EXPECT_EQ(G[i * 21 + j], R[i * 21 + j]);
+    }
+  EXPECT_THROW(TS::thin_plate_energy_matrix(5, p, q, Exact_kernel::Point_2(6, 2)),
+               TS::Invalid_input);
+  EXPECT_THROW(TS::thin_plate_energy_matrix(1, p, q, r), TS::Invalid_input);
+}
+
+TEST(MinimalEnergy, InterpolatesWithLessEnergyThanAnyOtherFit) {
+  const auto domain = random_delaunay<Epick>(60, 9);
+  std::vector<double> z;
+  for (const auto& p : domain.points())
+    z.push_back(std::exp(0.3 * p.x()) * std::sin(0.5 * p.y()));
+  C1_quintic_spline<Epick> energy(domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(energy, z, Fit::Minimal_energy);
+  EXPECT_LT(certify(energy).max_residual, 1e-10); // double: rounding of O(1) values
+  for (Index v = 0; v < domain.number_of_vertices(); ++v)
+    EXPECT_EQ(energy.value(energy.vertex_slot(v)), z[v]);
+  const double least = spline_energy(energy);
+  // Every other interpolant of the same data has at least this energy (1e-9 relative: the
+  // rounding of the solve) ...
+  for (Fit fit : {Fit::Local_polynomial, Fit::Tangent_planes, Fit::Least_squares, Fit::Adaptive}) {
+    C1_quintic_spline<Epick> other(domain, Corner_frame::Corner_and_two_stars);
+    TS::fit_vertex_data(other, z, fit, 3);
+    EXPECT_GE(spline_energy(other), least * (1 - 1e-9)) << int(fit);
+  }
+  // ... and so has the minimum with any free point moved.
+  std::mt19937 engine(5);
+  for (int trial = 0; trial < 20; ++trial) {
+    C1_quintic_spline<Epick> moved = energy;
+    const auto& free = moved.free_slots();
+    const auto s = free[std::size_t(engine() % free.size())];
+    if (s < domain.number_of_vertices())
+      continue;
+    moved.set_free_value(s, moved.value(s) + 1e-3);
+    moved.propagate();
+    EXPECT_GT(spline_energy(moved), least) << s;
+  }
+  // Linear data: the spline is the plane (zero energy), to the solve's rounding.
+  std::vector<double> linear;
+  for (const auto& p : domain.points())
+    linear.push_back(2 * p.x() - 3 * p.y() + 1);
+  TS::fit_vertex_data(energy, linear, Fit::Minimal_energy);
+  for (Index f = 0; f < domain.number_of_faces(); ++f) {
+    const auto& t = domain.face(f);
+    const auto c = CGAL::centroid(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+    EXPECT_NEAR(energy.patch(f).evaluate(c), 2 * c.x() - 3 * c.y() + 1, 1e-9) << f;
+  }
+}
+
+TEST(MinimalEnergy, SmoothingTradesResidualsForEnergy) {
+  // Noisy data: a larger lambda gives a smaller energy and larger residuals; the exact build
+  // of the smoothed spline is still exactly C^1.
+  const auto domain = random_delaunay<Epick>(80, 12);
+  std::mt19937 engine(8);
+  std::normal_distribution<double> noise(0, 0.05);
+  std::vector<double> z;
+  for (const auto& p : domain.points())
+    z.push_back(std::sin(0.4 * p.x()) + noise(engine));
+  double previous_energy = HUGE_VAL, previous_residual = -1;
+  for (double lambda : {0.0, 0.01, 0.1, 1.0, 10.0}) {
+    C1_quintic_spline<Epick> spline(domain, Corner_frame::Corner_and_two_stars);
+    TS::fit_vertex_data(spline, z, Fit::Minimal_energy, 3, TS::Degree_selection::Cross_validation,
+                        lambda);
+    double residual = 0;
+    for (Index v = 0; v < domain.number_of_vertices(); ++v)
+      residual += std::pow(spline.value(spline.vertex_slot(v)) - z[v], 2);
+    const double e = spline_energy(spline);
+    EXPECT_LT(e, previous_energy) << lambda;
+    EXPECT_GT(residual, previous_residual) << lambda;
+    if (lambda == 0) {
+      EXPECT_EQ(residual, 0);
+    }
+    previous_energy = e;
+    previous_residual = residual;
+  }
+  const auto exact_domain = random_delaunay<Exact_kernel>(25, 12);
+  std::vector<Exact_kernel::FT> exact_z;
+  for (std::size_t v = 0; v < exact_domain.number_of_vertices(); ++v)
+    exact_z.push_back(Exact_kernel::FT(int(v % 3)));
+  C1_quintic_spline<Exact_kernel> exact(exact_domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(exact, exact_z, Fit::Minimal_energy, 3,
+                      TS::Degree_selection::Cross_validation, 1.0);
+  EXPECT_TRUE(certify(exact).certified);
+  // Bad smoothing values and smoothing with another fit are refused.
+  C1_quintic_spline<Epick> spline(domain, Corner_frame::Corner_and_two_stars);
+  for (double bad : {-1.0, std::nan(""), HUGE_VAL})
+    EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::Minimal_energy, 3,
+                                     TS::Degree_selection::Cross_validation, bad),
+                 TS::Invalid_input);
+  EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::Local_polynomial, 3,
+                                   TS::Degree_selection::Cross_validation, 1.0),
+               TS::Invalid_input);
+}
+
+TEST(Adaptive, ReproducesCubicsExactlyAndEqualsTheLocalFitOnResolvedData) {
+  // Cubic data: every vertex resolves them (resolution 0), so the adaptive fit is the local
+  // fit and the spline is the cubic, exactly.
+  const auto domain = random_delaunay<Exact_kernel>(45, 23);
+  Random_rationals random(5);
+  const auto cubic = random.polynomial<Exact_kernel>(3);
+  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+  const TS::Fit_statistics statistics =
+      TS::fit_vertex_data(spline, sample(domain, cubic), Fit::Adaptive, 3);
+  EXPECT_EQ(statistics.vertices_by_trust[0], domain.number_of_vertices());
+  EXPECT_TRUE(reproduces(spline, cubic));
+  EXPECT_TRUE(certify(spline).certified);
+  // Smooth data on a jittered grid, h = 1/16: all resolved, the same control values as the
+  // local fit (order about 5 in benchmark/convergence.py).
+  const auto grid = delaunay_of<Epick>(jittered_grid(16, 3));
+  std::vector<double> z;
+  for (const auto& p : grid.points())
+    z.push_back(std::exp(p.x()) * std::sin(2 * p.y()));
+  TS::Local_polynomials<Epick> local(grid, z, 5);
+  double worst = 0;
+  for (Index v = 0; v < grid.number_of_vertices(); ++v)
+    worst = (std::max)(worst, local.resolution(v));
+  EXPECT_LT(worst, 1e-3);
+  C1_quintic_spline<Epick> adaptive(grid, Corner_frame::Corner_and_two_stars),
+      plain(grid, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(adaptive, z, Fit::Adaptive, 5);
+  TS::fit_vertex_data(plain, z, Fit::Local_polynomial, 5);
+  EXPECT_EQ(adaptive.values(), plain.values());
+}
+
+TEST(Adaptive, SparseFeaturefulDataFollowTheLeastEnergy) {
+  // Franke's cosine peak sampled at 40 random points: the local polynomials do not resolve
+  // it, and the adaptive fit is smoother (less energy) than the local one and closer to the
+  // function at a check grid, as on TOMS 792's sparse sets.
+  auto f = [](double x, double y) {
+    const double r = std::hypot(x - 0.5, y - 0.5);
+    return std::exp(-81.0 / 32 * r * r) * std::cos(9 * r);
+  };
+  std::mt19937 engine(17);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  std::vector<Epick::Point_2> points{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  while (points.size() < 40)
+    points.emplace_back(uniform(engine), uniform(engine));
+  const auto domain = delaunay_of<Epick>(points);
+  std::vector<double> z;
+  for (const auto& p : domain.points())
+    z.push_back(f(p.x(), p.y()));
+  TS::Local_polynomials<Epick> local(domain, z, 5);
+  std::size_t poorly = 0;
+  for (Index v = 0; v < domain.number_of_vertices(); ++v)
+    poorly += local.resolution(v) > 0.1 ? 1 : 0;
+  EXPECT_GT(poorly, domain.number_of_vertices() / 2);
+  C1_quintic_spline<Epick> adaptive(domain, Corner_frame::Corner_and_two_stars),
+      plain(domain, Corner_frame::Corner_and_two_stars);
+  const TS::Fit_statistics statistics = TS::fit_vertex_data(adaptive, z, Fit::Adaptive, 5);
+  TS::fit_vertex_data(plain, z, Fit::Local_polynomial, 5);
+  EXPECT_EQ(statistics.vertices_by_trust[0] + statistics.vertices_by_trust[1] +
+                statistics.vertices_by_trust[2],
+            domain.number_of_vertices());
+  EXPECT_FALSE(statistics.energy_skipped);
+  EXPECT_LT(certify(adaptive).max_residual, 1e-10); // double: rounding of O(1) values
+  EXPECT_LT(spline_energy(adaptive), spline_energy(plain));
+  const TS::Domain_locator<Epick> locator(domain);
+  std::vector<Epick::Point_2> queries;
+  for (int i = 0; i < 33; ++i)
+    for (int j = 0; j < 33; ++j)
+      queries.emplace_back(i / 32.0, j / 32.0);
+  auto squared_error = [&](const C1_quintic_spline<Epick>& spline) {
+    const std::vector<double> v = TS::evaluate_functional(
+        domain, locator, [&](Index face) { return spline.patch(face); }, queries);
+    double sum = 0;
+    for (std::size_t q = 0; q < queries.size(); ++q)
+      sum += std::pow(v[q] - f(queries[q].x(), queries[q].y()), 2);
+    return sum;
+  };
+  EXPECT_LT(squared_error(adaptive), squared_error(plain));
+}
+
+TEST(LocalFit, ResolutionIsZeroOnPolynomialsAndNearOneOnNoise) {
+  const auto domain = random_delaunay<Epick>(150, 41);
+  Random_rationals random(2);
+  const auto cubic = random.polynomial<Epick>(3);
+  std::vector<double> noise;
+  std::mt19937 engine(3);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  for (std::size_t v = 0; v < domain.number_of_vertices(); ++v)
+    noise.push_back(uniform(engine));
+  TS::Local_polynomials<Epick> exact_fit(domain, sample(domain, cubic), 3),
+      noise_fit(domain, noise, 5);
+  std::vector<double> noisy;
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    // rounding of the double fit: 1e-10 relative
+    EXPECT_LT(exact_fit.resolution(v), 1e-6) << v;
+    noisy.push_back(noise_fit.resolution(v));
+  }
+  std::nth_element(noisy.begin(), noisy.begin() + long(noisy.size() / 2), noisy.end());
+  EXPECT_GT(noisy[noisy.size() / 2], 0.7) << "median resolution of noise";
+}

@@ -399,9 +399,8 @@ private:
       const double floor = 1e-24 * data_scale * data_scale;
       // The plane on the chosen degree's own points: the same points, one model less rich.
       Candidate flat;
-      const bool has_plane = candidates[chosen].degree == 1
-                                 ? (flat = candidates[chosen], true)
-                                 : assess(1, candidates[chosen].n, flat);
+      const bool has_plane = candidates[chosen].degree == 1 ? (flat = candidates[chosen], true)
+                                                            : assess(1, candidates[chosen].n, flat);
       const double plane = flat.score, own = candidates[chosen].score;
       if (!has_plane || !std::isfinite(plane))
         m_resolution[v] = 1;

@@ -88,13 +88,13 @@ auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, co
   const std::array<std::vector<FT>, 3> L{{second(ex, ex), second(ex, ey), second(ey, ey)}};
   const std::array<FT, 3> factor{{FT(1), FT(2), FT(1)}};
   // Bernstein Gram matrix of degree m-2 (without |T|).
-  auto factorial = [](int k) {
+  auto factorial = [](int k) -> FT {
     FT f(1);
     for (int i = 2; i <= k; ++i)
       f = f * FT(i);
     return f;
   };
-  auto multinomial = [&](int m, const Multi_index& a) {
+  auto multinomial = [&](int m, const Multi_index& a) -> FT {
     return factorial(m) / (factorial(a.i) * factorial(a.j) * factorial(a.k));
   };
   const int d = degree - 2;
