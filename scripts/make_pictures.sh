@@ -29,8 +29,8 @@ done
   --mode curvature --view 0,90 --size 600x450 --range 4 >/dev/null
 
 # Curvature of exp(x) sin(2y) (negative everywhere, -1 <= K < 0) from 1000 scattered
-# points: the default local polynomial fit, and the tangent-plane fit it replaced.
-for fit in local tangent; do
+# points: the default adaptive fit, the minimal-energy fit, and the tangent-plane fit.
+for fit in adaptive energy tangent; do
   "$tspline" c1 --input data/expsin_1000.xyz --fit "$fit" --save "$work/expsin_$fit.spline" >/dev/null
   "$tspline" render --input "$work/expsin_$fit.spline" --out "$fig/expsin_curvature_$fit.png" \
     --mode curvature --view 0,90 --size 400x300 --range 1 >/dev/null
@@ -39,7 +39,7 @@ done
 # The convergence plot of the manual, where python3-numpy (and, for its reference curve,
 # python3-scipy) are installed: python3-matplotlib draws it.
 if /usr/bin/python3 -c "import numpy, matplotlib" 2>/dev/null; then
-  /usr/bin/python3 benchmark/convergence.py --tspline "$tspline" --fits local,local:3,tangent \
+  /usr/bin/python3 benchmark/convergence.py --tspline "$tspline" --fits adaptive,local:3,energy,tangent \
     --plot "$fig/convergence.png" >/dev/null
 fi
 

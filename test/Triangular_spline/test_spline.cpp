@@ -128,6 +128,20 @@ Planar_domain<K> delaunay_of(const std::vector<typename K::Point_2>& points) {
       dt, [](auto) { return true; }, handles);
 }
 
+// A jittered grid of the unit square, spacing 1/n, jitter up to h/4, the boundary kept.
+std::vector<Epick::Point_2> jittered_grid(int n, unsigned seed) {
+  std::mt19937 engine{seed};
+  std::uniform_real_distribution<double> jitter(-0.25 / n, 0.25 / n);
+  std::vector<Epick::Point_2> points;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double dx = jitter(engine), dy = jitter(engine);
+      points.emplace_back(double(i) / n + (i == 0 || i == n ? 0 : dx),
+                          double(j) / n + (j == 0 || j == n ? 0 : dy));
+    }
+  return points;
+}
+
 template <class K>
 std::vector<std::pair<std::string, Planar_domain<K>>> all_domains() {
   return {{"random Delaunay", random_delaunay<K>(40, 7)},
@@ -561,15 +575,20 @@ TEST(LocalFit, ReproducesCubicsExactlyWithEitherDegreeRule) {
   const auto domain = random_delaunay<Exact_kernel>(45, 23);
   Random_rationals random(5);
   const auto cubic = random.polynomial<Exact_kernel>(3);
-  for (auto rule : {TS::Degree_selection::Cross_validation, TS::Degree_selection::Largest}) {
-    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
-    const TS::Fit_statistics statistics =
-        TS::fit_vertex_data(spline, sample(domain, cubic), Fit::Local_polynomial, 3, rule);
-    EXPECT_EQ(statistics.vertices_by_degree[3], domain.number_of_vertices())
-        << "every neighbourhood of 45 points determines a cubic";
-    EXPECT_TRUE(reproduces(spline, cubic));
-    EXPECT_TRUE(certify(spline).certified);
-  }
+  // The adaptive fit trusts every vertex on such data (resolution 0): the same spline.
+  for (Fit fit : {Fit::Local_polynomial, Fit::Adaptive})
+    for (auto rule : {TS::Degree_selection::Cross_validation, TS::Degree_selection::Largest}) {
+      C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+      const TS::Fit_statistics statistics =
+          TS::fit_vertex_data(spline, sample(domain, cubic), fit, 3, rule);
+      EXPECT_EQ(statistics.vertices_by_degree[3], domain.number_of_vertices())
+          << "every neighbourhood of 45 points determines a cubic";
+      if (fit == Fit::Adaptive) {
+        EXPECT_EQ(statistics.vertices_by_trust[0], domain.number_of_vertices());
+      }
+      EXPECT_TRUE(reproduces(spline, cubic));
+      EXPECT_TRUE(certify(spline).certified);
+    }
   // The global least-squares fit has the same targets: consistent targets are reproduced.
   // Its solve runs in double: rounding relative to the values (up to 5e3 here), times the
   // propagation weights, hence 1e-10 relative.
@@ -702,16 +721,7 @@ TEST(LocalFit, ConvergesWithOrderAboveThreeAndAHalf) {
   auto f = [](double x, double y) { return std::exp(x) * std::sin(2 * y); };
   std::vector<double> errors;
   for (int n : {8, 16, 32}) {
-    std::mt19937 engine{static_cast<unsigned>(n)};
-    std::uniform_real_distribution<double> jitter(-0.25 / n, 0.25 / n);
-    std::vector<Epick::Point_2> points;
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= n; ++j) {
-        const double dx = jitter(engine), dy = jitter(engine);
-        points.emplace_back(double(i) / n + (i == 0 || i == n ? 0 : dx),
-                            double(j) / n + (j == 0 || j == n ? 0 : dy));
-      }
-    const auto domain = delaunay_of<Epick>(points);
+    const auto domain = delaunay_of<Epick>(jittered_grid(n, static_cast<unsigned>(n)));
     std::vector<double> z;
     for (const auto& p : domain.points())
       z.push_back(f(p.x(), p.y()));
@@ -938,19 +948,6 @@ typename K::FT domain_area(const Planar_domain<K>& domain) {
   return area;
 }
 
-std::vector<Epick::Point_2> jittered_grid(int n, unsigned seed) {
-  std::mt19937 engine{seed};
-  std::uniform_real_distribution<double> jitter(-0.25 / n, 0.25 / n);
-  std::vector<Epick::Point_2> points;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j) {
-      const double dx = jitter(engine), dy = jitter(engine);
-      points.emplace_back(double(i) / n + (i == 0 || i == n ? 0 : dx),
-                          double(j) / n + (j == 0 || j == n ? 0 : dy));
-    }
-  return points;
-}
-
 } // namespace
 
 TEST(ThinPlateEnergy, IsExactOnQuadraticsAndZeroOnLinearFunctions) {
@@ -1073,20 +1070,10 @@ TEST(MinimalEnergy, SmoothingTradesResidualsForEnergy) {
                TS::Invalid_input);
 }
 
-TEST(Adaptive, ReproducesCubicsExactlyAndEqualsTheLocalFitOnResolvedData) {
-  // Cubic data: every vertex resolves them (resolution 0), so the adaptive fit is the local
-  // fit and the spline is the cubic, exactly.
-  const auto domain = random_delaunay<Exact_kernel>(45, 23);
-  Random_rationals random(5);
-  const auto cubic = random.polynomial<Exact_kernel>(3);
-  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
-  const TS::Fit_statistics statistics =
-      TS::fit_vertex_data(spline, sample(domain, cubic), Fit::Adaptive, 3);
-  EXPECT_EQ(statistics.vertices_by_trust[0], domain.number_of_vertices());
-  EXPECT_TRUE(reproduces(spline, cubic));
-  EXPECT_TRUE(certify(spline).certified);
-  // Smooth data on a jittered grid, h = 1/16: all resolved, the same control values as the
-  // local fit (order about 5 in benchmark/convergence.py).
+TEST(Adaptive, EqualsTheLocalFitOnResolvedData) {
+  // (Exact cubic precision: LocalFit.ReproducesCubicsExactlyWithEitherDegreeRule.) Smooth data on a
+  // jittered grid, h = 1/16: all resolved, the same control values as the local fit (order about 5
+  // in benchmark/convergence.py).
   const auto grid = delaunay_of<Epick>(jittered_grid(16, 3));
   std::vector<double> z;
   for (const auto& p : grid.points())

@@ -371,18 +371,19 @@ private:
     }
     // Largest degree, or the lowest degree that predicts left-out points nearly as well
     // as the best one (scores at rounding level count as ties).
+    // Scores at rounding level of the neighbourhood's data count as zero.
+    double data_scale = 0;
+    for (Index w : work.points)
+      for (int k = 0; k < D; ++k)
+        data_scale = (std::max)(
+            data_scale, std::abs(CGAL::to_double(Value_traits<Value>::coordinate(values[w], k)) -
+                                 CGAL::to_double(Value_traits<Value>::coordinate(values[v], k))));
+    const double floor = 1e-24 * data_scale * data_scale;
     std::size_t chosen = candidates.size() - 1;
     if (m_selection == Degree_selection::Cross_validation) {
       double best = std::numeric_limits<double>::infinity();
       for (const auto& candidate : candidates)
         best = (std::min)(best, candidate.score);
-      double data_scale = 0;
-      for (Index w : work.points)
-        for (int k = 0; k < D; ++k)
-          data_scale = (std::max)(
-              data_scale, std::abs(CGAL::to_double(Value_traits<Value>::coordinate(values[w], k)) -
-                                   CGAL::to_double(Value_traits<Value>::coordinate(values[v], k))));
-      const double floor = 1e-24 * data_scale * data_scale;
       for (chosen = 0; chosen + 1 < candidates.size(); ++chosen)
         if (candidates[chosen].score <= (std::max)(m_tie_ratio * best, floor))
           break;
@@ -390,13 +391,6 @@ private:
     // Resolution: leave-one-out score of the chosen degree against the plane's (degree 1 is
     // the first candidate whenever a plane is determined).
     {
-      double data_scale = 0;
-      for (Index w : work.points)
-        for (int k = 0; k < D; ++k)
-          data_scale = (std::max)(
-              data_scale, std::abs(CGAL::to_double(Value_traits<Value>::coordinate(values[w], k)) -
-                                   CGAL::to_double(Value_traits<Value>::coordinate(values[v], k))));
-      const double floor = 1e-24 * data_scale * data_scale;
       // The plane on the chosen degree's own points: the same points, one model less rich.
       Candidate flat;
       const bool has_plane = candidates[chosen].degree == 1 ? (flat = candidates[chosen], true)
