@@ -466,25 +466,28 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     throw Invalid_input("fit: the smoothing must be a finite number >= 0");
   if (smoothing > 0 && fit != Fit::Minimal_energy)
     throw Invalid_input("fit: smoothing needs the minimal-energy fit");
-  if (fit == Fit::Minimal_energy) {
-    internal::minimal_energy_free_values(spline, values, smoothing,
-                                         [](Slot, Value&) { return false; });
-  } else if (fit == Fit::Adaptive) {
-    // Trust in each vertex's polynomial, from how well it resolves the data.
+  // Adaptive fit: trust in each vertex's polynomial, from how well it resolves the data.
+  std::vector<double> trust;
+  bool blend_energy = false;
+  if (fit == Fit::Adaptive) {
     const auto [low, high] = internal::adaptive_resolution_thresholds();
-    std::vector<double> trust(domain.number_of_vertices());
+    trust.resize(domain.number_of_vertices());
     for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v) {
       const double r = local->resolution(v);
       trust[v] = r <= low ? 1.0 : r >= high ? 0.0 : (high - r) / (high - low);
       ++statistics.vertices_by_trust[trust[v] >= 1 ? 0 : trust[v] > 0 ? 1 : 2];
     }
     // The energy solve is global over the untrusted region and superlinear; beyond a
-    // bounded size the fit stays local (and says so) rather than take minutes.
-    if (statistics.vertices_by_trust[1] + statistics.vertices_by_trust[2] >
-        internal::adaptive_energy_vertex_limit) {
-      statistics.energy_skipped = true;
-      std::fill(trust.begin(), trust.end(), 1.0);
-    }
+    // bounded size the fit stays local (and says so) rather than take minutes. Fully
+    // trusted data need no solve: the fit is then Local_polynomial.
+    const std::size_t untrusted = statistics.vertices_by_trust[1] + statistics.vertices_by_trust[2];
+    statistics.energy_skipped = untrusted > internal::adaptive_energy_vertex_limit;
+    blend_energy = untrusted > 0 && !statistics.energy_skipped;
+  }
+  if (fit == Fit::Minimal_energy) {
+    internal::minimal_energy_free_values(spline, values, smoothing,
+                                         [](Slot, Value&) { return false; });
+  } else if (blend_energy) {
     auto nearest = [&](Slot s) {
       const auto label = spline.polar_label(s);
       int largest = 0;
