@@ -8,8 +8,12 @@ along the boundary only, so the convex hull is the unit square). The error is th
 absolute error on a 200 x 200 grid strictly inside the square; the observed order between
 two rows is log2(e_previous / e).
 
+With --points random the same numbers of points are drawn uniformly (the four corners
+included): the thin triangles along the hull that real scattered data have.
+
 Usage: convergence.py [--tspline PATH] [--fits local,lsq,tangent] [--functions expsin,franke]
-                      [--levels 8,16,32,64,128] [--plot FILE.png] [--markdown]
+                      [--levels 8,16,32,64,128] [--points grid|random] [--plot FILE.png]
+                      [--markdown]
 Prints one table per function. Needs numpy; scipy and matplotlib are optional.
 """
 import argparse
@@ -47,6 +51,15 @@ def jittered_grid(n, seed):
     return np.column_stack([x, y])
 
 
+def random_points(n, seed):
+    """(n+1)^2 uniformly random points of the unit square with its four corners (so the hull
+    is the square): thin triangles along the hull, as in real scattered data."""
+    rng = np.random.default_rng(seed)
+    points = rng.random(((n + 1) ** 2, 2))
+    points[:4] = [[0, 0], [1, 0], [0, 1], [1, 1]]
+    return points
+
+
 def evaluation_grid(m=200):
     t = (np.arange(m) + 0.5) / m
     gx, gy = np.meshgrid(t, t, indexing="ij")
@@ -81,6 +94,8 @@ def main():
     parser.add_argument("--fits", default="local,lsq,tangent")
     parser.add_argument("--functions", default="expsin,franke")
     parser.add_argument("--levels", default="8,16,32,64,128")
+    parser.add_argument("--points", default="grid", choices=["grid", "random"],
+                        help="jittered grids (default) or as many uniformly random points")
     parser.add_argument("--plot", default="")
     parser.add_argument("--markdown", action="store_true")
     args = parser.parse_args()
@@ -100,7 +115,7 @@ def main():
             exact = f(queries[:, 0], queries[:, 1])
             errors = {c: [] for c in columns}
             for n in levels:
-                points = jittered_grid(n, seed=n)
+                points = (jittered_grid if args.points == "grid" else random_points)(n, seed=n)
                 z = f(points[:, 0], points[:, 1])
                 for fit in fits:
                     method, extra = fit_arguments(fit)

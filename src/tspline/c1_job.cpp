@@ -44,25 +44,75 @@ struct Input {
   std::vector<typename K::FT> values;
   std::string kind;
   std::size_t merged_duplicates = 0;
+  int y_exponent = 0; // --rescale: the domain's y is the data's times 2^y_exponent
 };
 
+// --rescale: the power of two that brings the extent in y closest to the extent in x
+// (scipy's rescale=True normalises both to 1; a power of two is exact in double and in
+// rationals, so the fitted spline is moved back onto the data's own points exactly).
+template <class Point_2>
+int rescale_exponent(const std::vector<Point_2>& points) {
+  double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+  for (const auto& p : points) {
+    x0 = (std::min)(x0, CGAL::to_double(p.x()));
+    x1 = (std::max)(x1, CGAL::to_double(p.x()));
+    y0 = (std::min)(y0, CGAL::to_double(p.y()));
+    y1 = (std::max)(y1, CGAL::to_double(p.y()));
+  }
+  if (!(x1 > x0) || !(y1 > y0))
+    return 0; // degenerate data: the domain builder says why
+  return static_cast<int>(std::lround(std::log2((x1 - x0) / (y1 - y0))));
+}
+
+template <class Point_2>
+void scale_y(std::vector<Point_2>& points, int exponent) {
+  using FT = std::decay_t<decltype(points.front().x())>;
+  const FT factor =
+      exponent >= 0 ? FT(std::ldexp(1.0, exponent)) : FT(1) / FT(std::ldexp(1.0, -exponent));
+  for (auto& p : points)
+    p = Point_2(p.x(), p.y() * factor);
+}
+
 template <class K>
-Input<K> read_input(const std::string& path) {
+TS::Planar_domain<K> scaled_y(const TS::Planar_domain<K>& domain, int exponent) {
+  std::vector<typename K::Point_2> points = domain.points();
+  scale_y(points, exponent);
+  std::vector<std::array<std::uint32_t, 3>> faces;
+  for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f)
+    faces.push_back(domain.face(f));
+  return TS::Planar_domain<K>(std::move(points), std::move(faces));
+}
+
+template <class K>
+Input<K> read_input(const std::string& path, bool rescale) {
   if (path.empty()) {
     auto [domain, values] = TS::demo_data<K>();
-    return {std::move(domain), std::move(values), "embedded demo data (L-shape with a hole)", 0};
+    Input<K> input{std::move(domain), std::move(values), "embedded demo data (L-shape with a hole)",
+                   0};
+    if (rescale) {
+      input.y_exponent = rescale_exponent(input.domain.points());
+      input.domain = scaled_y(input.domain, input.y_exponent);
+    }
+    return input;
   }
   const std::string ext = lowercase_extension(path);
   if (ext == "xyz" || ext == "txt") {
     std::ifstream in = open_input(path);
-    const TS::Scattered_data<K> data = TS::read_xyz<K>(in, path);
+    TS::Scattered_data<K> data = TS::read_xyz<K>(in, path);
+    // Rescaled before triangulating: the Delaunay triangulation of the rescaled points.
+    const int exponent = rescale ? rescale_exponent(data.points) : 0;
+    scale_y(data.points, exponent);
     auto [domain, values] = TS::delaunay_domain(data);
     return {std::move(domain), std::move(values), "scattered points, Delaunay triangulation",
-            data.merged_duplicates};
+            data.merged_duplicates, exponent};
   }
   if (ext == "off" || ext == "obj" || ext == "ply" || ext == "stl") {
     auto [domain, values] = TS::read_mesh_domain<K>(path);
-    return {std::move(domain), std::move(values), "triangle mesh, (x, y) as the domain", 0};
+    const int exponent = rescale ? rescale_exponent(domain.points()) : 0;
+    if (exponent != 0)
+      domain = scaled_y(domain, exponent);
+    return {std::move(domain), std::move(values), "triangle mesh, (x, y) as the domain", 0,
+            exponent};
   }
   throw TS::Invalid_input("'" + path + "': unknown input format '." + ext +
                           "' (expected .xyz for scattered points, or .off/.obj/.ply/.stl)");
@@ -89,7 +139,7 @@ Json run(const C1_job& job, std::ostream& out) {
                           std::filesystem::file_size(job.input, size_error) > 4000000 &&
                           !size_error;
   progress("c1", "reading and triangulating " + job.input, large_file);
-  Input<K> input = read_input<K>(job.input);
+  Input<K> input = read_input<K>(job.input, job.rescale);
   timings.set("read_and_triangulate", clock.lap());
   // About a second of work from here on: 10^5 triangles exact, 10^6 in double.
   const bool large = input.domain.number_of_faces() > (job.exact ? 20000u : 300000u);
@@ -124,6 +174,9 @@ Json run(const C1_job& job, std::ostream& out) {
       job.degree_selection == "largest" ? TS::Degree_selection::Largest
                                         : TS::Degree_selection::Cross_validation,
       job.smoothing);
+  // Fitted in rescaled coordinates: back onto the data's own (exact, see map_domain()).
+  if (input.y_exponent != 0)
+    spline.map_domain(scaled_y(spline.domain(), -input.y_exponent));
   timings.set("fit_and_propagate", clock.lap());
 
   const auto& d = spline.domain();
@@ -190,6 +243,8 @@ Json run(const C1_job& job, std::ostream& out) {
   report.set("number_type", job.exact ? "exact" : "double");
   report.set("fit", job.fit);
   report.set("fix", job.fix);
+  if (job.rescale)
+    report.set("rescale_y_factor", std::ldexp(1.0, input.y_exponent));
   if (fit == TS::Fit::Minimal_energy)
     report.set("smoothing", job.smoothing);
   if (fit == TS::Fit::Local_polynomial || fit == TS::Fit::Least_squares ||
@@ -341,6 +396,8 @@ Json run(const C1_job& job, std::ostream& out) {
       out << " (exact rank dimension " << *rank_dimension << ")";
     out << "\n  fit: " << job.fit << ", arithmetic: " << (job.exact ? "exact rationals" : "double")
         << ", largest interpolation error: " << interpolation_error << "\n";
+    if (input.y_exponent != 0)
+      out << "  rescaled: triangulated and fitted with y times 2^" << input.y_exponent << "\n";
     if (fit == TS::Fit::Adaptive) {
       const auto& trust = fit_statistics.vertices_by_trust;
       out << "  vertices following their local polynomial: " << trust[0]

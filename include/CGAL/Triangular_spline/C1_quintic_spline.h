@@ -349,6 +349,28 @@ public:
     m_values[s] = v;
   }
 
+  /*!
+    moves the spline onto `image`, the image of its domain under an affine map with positive
+    determinant: the same vertices and the same triangles, in the same order. Every control
+    value and the plan are kept. The \f$C^1\f$ conditions (Xu (3.4), (3.5)) and hence the
+    propagation weights are barycentric, so they are invariant under such maps: the spline
+    stays \f$C^1\f$, exactly when the map is exact (a scaling by powers of two is, in
+    `double` too). This is how a spline is fitted in rescaled coordinates (`tspline c1
+    --rescale`) and returned over the data's own.
+    \pre `image` is an affine image of `domain()` (certify the result when unsure)
+    \throws Invalid_input if `image` has other vertices or triangles
+  */
+  void map_domain(Domain image) {
+    if (image.number_of_vertices() != m_domain.number_of_vertices() ||
+        image.number_of_faces() != m_domain.number_of_faces())
+      throw Invalid_input("map_domain: the image has other vertex or face counts");
+    for (Index f = 0; f < m_domain.number_of_faces(); ++f)
+      if (image.face(f) != m_domain.face(f))
+        throw Invalid_input("map_domain: triangle " + std::to_string(f) +
+                            " differs (vertices or orientation) in the image");
+    m_domain = std::move(image);
+  }
+
   /// computes every dependent slot from the free ones, in plan order.
   void propagate() {
     for (const Rule& r : m_rules)

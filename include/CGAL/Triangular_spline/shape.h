@@ -69,7 +69,11 @@ enum class Fit {
   /// \f$\int f_{xx}^2 + 2 f_{xy}^2 + f_{yy}^2\f$ over the whole spline space (exact Bernstein
   /// Gram matrices, `thin_plate_energy_matrix()`; the sparse normal equations are solved in
   /// `double` and the free values converted to `FT`, as for `Least_squares`): the fairest
-  /// interpolant, Xu §8.3's open problem; the spline analogue of a thin-plate spline. With
+  /// interpolant, Xu §8.3's open problem; the spline analogue of a thin-plate spline. Thin
+  /// triangles (shape quality \f$q = 4\sqrt{3}\,\mathrm{area} / \sum \mathrm{edge}^2 < 0.1\f$)
+  /// count with weight \f$(q/0.1)^3\f$: their energy grows as the inverse cube of their
+  /// thinness, and at full weight the thin triangles along the hull of scattered data would
+  /// dominate the solve and bend the surface around them. With
   /// a positive `smoothing` \f$\lambda\f$ it no longer interpolates but minimises
   /// \f$\sum_v (s(v) - z_v)^2 + \lambda h^2 E(s)\f$, \f$h^2\f$ the domain's area per
   /// vertex, for noisy data. Reproduces linear data exactly (up to the solve's rounding in
@@ -83,7 +87,10 @@ enum class Fit {
   /// polynomial relative to a plane's) gives a trust \f$\tau_v\f$: 1 for \f$\rho_v \le 0.1\f$,
   /// 0 for \f$\rho_v \ge 0.5\f$, linear between. Free points whose nearest vertices are all
   /// trusted take their local value (exactly as `Local_polynomial`); the others are chosen by
-  /// least thin-plate energy with those as boundary values, then each nearest vertex's share
+  /// least thin-plate energy over the untrusted vertices and three rings around them, with
+  /// the local values beyond as boundary values (the margin keeps the kinks of local values
+  /// in thin boundary triangles, tiny in value but huge in energy, from bending the surface
+  /// next to them), then each nearest vertex's share
   /// becomes \f$\tau_v\f$ times its polynomial's value plus \f$1-\tau_v\f$ times the energy
   /// value. Data from a polynomial of degree at most the local degree leave every vertex
   /// trusted and are reproduced exactly, as by `Local_polynomial`. The energy solve is global
@@ -263,6 +270,23 @@ void least_squares_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
   set_solved_free_values(spline, a, triplets, rhs, "least-squares");
 }
 
+// The weight of a triangle's energy in the minimal-energy fits: 1, except for thin
+// triangles (shape quality q = 4 sqrt(3) area / sum of squared edges below 0.1, about 1:17),
+// (q / 0.1)^3. A thin triangle's energy grows as the inverse cube of its thinness; at full
+// weight the thin triangles along the hull of scattered data dominate the solve, which then
+// bends the surface around them (and loses the rest of the triangles to rounding).
+template <class Point_2>
+double thin_triangle_weight(const Point_2& p, const Point_2& q, const Point_2& r) {
+  const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y());
+  const double ux = CGAL::to_double(q.x()) - px, uy = CGAL::to_double(q.y()) - py;
+  const double vx = CGAL::to_double(r.x()) - px, vy = CGAL::to_double(r.y()) - py;
+  const double area = std::abs(ux * vy - uy * vx) / 2;
+  const double edges =
+      ux * ux + uy * uy + vx * vx + vy * vy + (ux - vx) * (ux - vx) + (uy - vy) * (uy - vy);
+  const double quality = 4 * std::sqrt(3.0) * area / edges;
+  return quality >= 0.1 ? 1.0 : std::pow(quality / 0.1, 3);
+}
+
 // Minimal thin-plate energy (Fit::Minimal_energy): corners fixed to the data, the free slots
 // for which fixed(s, value) is true fixed to that value, and min sum_f b_f^T G_f b_f over
 // the others; with smoothing > 0 the corners are unknowns too and the objective is
@@ -295,8 +319,9 @@ void minimal_energy_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
   std::vector<Eigen::Triplet<double>> triplets;
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Eigen::Index(a.unknowns), D);
   std::vector<int> local;
-  std::vector<double> g(n * n);
-  Eigen::MatrixXd R, GR, H;
+  using Dense = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  Dense L(10, Eigen::Index(n)), M(10, 10);
+  Eigen::MatrixXd R, X, MX, H, B;
   for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
     bool all_fixed = true;
     for (std::size_t i = 0; i < n && all_fixed; ++i)
@@ -304,10 +329,12 @@ void minimal_energy_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
     if (all_fixed)
       continue;
     const auto& t = domain.face(f);
-    const auto G =
-        thin_plate_energy_matrix(5, domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
-    for (std::size_t i = 0; i < n * n; ++i)
-      g[i] = weight * CGAL::to_double(G[i]);
+    // Differences first (L R, L C), then squares: forming the Gram matrix first loses
+    // thin triangles' energy to cancellation in double.
+    const auto factors =
+        thin_plate_energy_factors(5, domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+    const double face_weight =
+        weight * thin_triangle_weight(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
     std::array<std::uint32_t, 21> slot;
     local.clear();
     for (std::size_t i = 0; i < n; ++i) {
@@ -328,11 +355,23 @@ void minimal_energy_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
       for (int d = 0; d < D; ++d)
         C(Eigen::Index(i), d) = a.constant[slot[i]][std::size_t(d)];
     }
-    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
-        Gf(g.data(), Eigen::Index(n), Eigen::Index(n));
-    GR.noalias() = Gf * R;
-    H.noalias() = R.transpose() * GR;
-    const Eigen::MatrixXd b = -(GR.transpose() * C);
+    for (Eigen::Index a1 = 0; a1 < 10; ++a1)
+      for (Eigen::Index a2 = 0; a2 < 10; ++a2)
+        M(a1, a2) = face_weight * CGAL::to_double(factors.gram[std::size_t(a1 * 10 + a2)]);
+    H.setZero(k, k);
+    B.setZero(k, D);
+    for (int p = 0; p < 3; ++p) {
+      for (Eigen::Index a1 = 0; a1 < 10; ++a1)
+        for (Eigen::Index i = 0; i < Eigen::Index(n); ++i)
+          L(a1, i) =
+              CGAL::to_double(factors.second[std::size_t(p)][std::size_t(a1) * n + std::size_t(i)]);
+      const double w = factors.weight[std::size_t(p)];
+      X.noalias() = L * R;
+      MX.noalias() = M * X;
+      H.noalias() += w * (X.transpose() * MX);
+      B.noalias() -= w * (MX.transpose() * (L * C));
+    }
+    const Eigen::MatrixXd& b = B;
     for (Eigen::Index i = 0; i < k; ++i) {
       for (Eigen::Index j = 0; j < k; ++j)
         triplets.emplace_back(local[std::size_t(i)], local[std::size_t(j)], H(i, j));
@@ -364,6 +403,8 @@ inline std::pair<double, double> adaptive_resolution_thresholds() {
 // The largest number of untrusted vertices for which the Adaptive fit solves the energy
 // problem (about 4 s and 400 MB measured on scattered noisy data, Eigen's SimplicialLDLT).
 constexpr std::size_t adaptive_energy_vertex_limit = 10000;
+// Rings around the untrusted vertices over which the Adaptive fit's energy solve extends.
+constexpr int adaptive_energy_margin_rings = 3;
 
 } // namespace internal
 
@@ -499,11 +540,32 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
           ties.push_back(entry.first);
       return ties;
     };
-    // Slots whose nearest vertices are all trusted keep their local value; the energy
-    // solve chooses the others, with the trusted ones as its boundary values.
+    // The energy solve covers the untrusted vertices and a margin of rings around them,
+    // with the local values beyond as boundary values. The margin keeps the local values'
+    // kinks in thin boundary triangles (tiny in value, huge in energy) out of the solve,
+    // which would otherwise bend the surface next to them to reduce their energy.
+    std::vector<int> ring(domain.number_of_vertices(), -1);
+    std::vector<std::uint32_t> front;
+    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+      if (trust[v] < 1) {
+        ring[v] = 0;
+        front.push_back(v);
+      }
+    for (int r = 1; r <= internal::adaptive_energy_margin_rings; ++r) {
+      std::vector<std::uint32_t> next;
+      for (std::uint32_t u : front) {
+        const auto [nb, ne] = domain.neighbours(u);
+        for (auto w = nb; w != ne; ++w)
+          if (ring[*w] < 0) {
+            ring[*w] = r;
+            next.push_back(*w);
+          }
+      }
+      front.swap(next);
+    }
     internal::minimal_energy_free_values(spline, values, 0, [&](Slot s, Value& given) {
       for (std::uint32_t v : nearest(s))
-        if (trust[v] < 1)
+        if (ring[v] >= 0)
           return false;
       given = target(s);
       return true;
@@ -517,8 +579,12 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       bool trusted = true;
       for (std::uint32_t v : ties)
         trusted = trusted && trust[v] >= 1;
-      if (trusted)
+      if (trusted) {
+        // solved only as part of the margin: the local value is the one to keep
+        if (std::any_of(ties.begin(), ties.end(), [&](std::uint32_t v) { return ring[v] >= 0; }))
+          spline.set_free_value(s, target(s));
         continue;
+      }
       const auto label = spline.polar_label(s);
       std::array<std::pair<const typename GeomTraits::Point_2*, int>, 3> arguments;
       std::size_t count = 0;

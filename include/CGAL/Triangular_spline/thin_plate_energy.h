@@ -33,46 +33,64 @@ inline std::vector<Multi_index> bernstein_indices(int degree) {
 
 /*!
   \ingroup PkgTriangularSplineSplines
-  \brief returns the Gram matrix of the thin-plate energy of a polynomial of degree `degree`
-  in Bernstein–Bézier form over the triangle \f$(r,s,t)\f$: the symmetric matrix \f$G\f$,
-  of size \f$\binom{m+2}{2}\f$ in the order of `bernstein_indices()`, with
+  \brief the thin-plate energy of a polynomial of degree \f$m\f$ in Bernstein–Bézier form
+  over a triangle, in factored form: \f$E(b) = \sum_{p} w_p\, (L_p b)^T M (L_p b)\f$, with
+  \f$L_p b\f$ the Bernstein coefficients of degree \f$m-2\f$ of \f$f_{xx}, f_{xy}, f_{yy}\f$
+  (\f$p\f$ = 0, 1, 2; weights \f$w\f$ = 1, 2, 1) and \f$M\f$ the Gram matrix of the Bernstein
+  polynomials of degree \f$m-2\f$ over the triangle. Differences first, then squares: in
+  floating point this keeps the energy of thin triangles accurate, where forming
+  \f$G = \sum_p w_p L_p^T M L_p\f$ first loses it to cancellation (its entries grow as
+  the inverse fourth power of the triangle's height).
+*/
+template <class FT>
+struct Thin_plate_energy_factors {
+  /// the number of control values, \f$\binom{m+2}{2}\f$
+  std::size_t fine = 0;
+  /// the number of coefficients of a second derivative, \f$\binom{m}{2}\f$
+  std::size_t coarse = 0;
+  /// `second[p]`: \f$L_p\f$, `coarse` x `fine`, row by row (control values in the order of
+  /// `bernstein_indices()`)
+  std::array<std::vector<FT>, 3> second;
+  /// \f$M\f$, `coarse` x `coarse`, row by row
+  std::vector<FT> gram;
+  /// the weights \f$w_p\f$
+  static constexpr std::array<int, 3> weight{{1, 2, 1}};
+};
 
-  \f[ \int_{rst} f_{xx}^2 + 2 f_{xy}^2 + f_{yy}^2 \, dA \;=\; b^T G\, b \f]
-
-  for the control values \f$b\f$ of \f$f\f$. Exact in `FT`: the second derivatives are
-  differences of the control values with the barycentric coordinates of the unit vectors
-  (Farin's directional derivative formula), and the products of Bernstein polynomials of
-  degree \f$m-2\f$ integrate in closed form,
-  \f$\int B_\alpha B_\beta = |T| \binom{m-2}{\alpha}\binom{m-2}{\beta} /
-  \left(\binom{2m-4}{\alpha+\beta}\binom{2m-2}{2}\right)\f$. The energy is invariant under
-  rotations and vanishes exactly on linear functions; it is the quadratic form of the
-  `Fit::Minimal_energy` fit.
-  \pre `degree >= 2` and \f$(r,s,t)\f$ not collinear
-  \returns the matrix row by row (`G[a * n + b]`, n the number of indices)
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief returns the factors of the thin-plate energy of degree `degree` over the triangle
+  \f$(r,s,t)\f$, exact in `FT`: the second derivatives are differences of the control
+  values with the barycentric coordinates of the unit vectors (Farin's directional
+  derivative formula), and products of Bernstein polynomials of degree \f$m-2\f$ integrate
+  in closed form, \f$\int B_\alpha B_\beta = |T| \binom{m-2}{\alpha}\binom{m-2}{\beta} /
+  \left(\binom{2m-4}{\alpha+\beta}\binom{2m-2}{2}\right)\f$.
+  \throws Invalid_input if `degree < 2` or \f$(r,s,t)\f$ is collinear
 */
 template <class Point_2>
-auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, const Point_2& t) {
+auto thin_plate_energy_factors(int degree, const Point_2& r, const Point_2& s, const Point_2& t) {
   using FT = std::decay_t<decltype(r.x())>;
   if (degree < 2)
-    throw Invalid_input("thin_plate_energy_matrix: the degree must be at least 2");
+    throw Invalid_input("thin_plate_energy: the degree must be at least 2");
   const FT ux = s.x() - r.x(), uy = s.y() - r.y(), vx = t.x() - r.x(), vy = t.y() - r.y();
   const FT det = ux * vy - uy * vx;
   if (CGAL::is_zero(det))
-    throw Invalid_input("thin_plate_energy_matrix: degenerate triangle");
+    throw Invalid_input("thin_plate_energy: degenerate triangle");
   // Barycentric coordinates of the unit vectors e_x and e_y.
   const std::array<FT, 3> ex{{(uy - vy) / det, vy / det, -uy / det}};
   const std::array<FT, 3> ey{{(vx - ux) / det, -vx / det, ux / det}};
   const FT area = CGAL::abs(det) / FT(2);
-  const auto fine = bernstein_indices(degree);
   const auto coarse = bernstein_indices(degree - 2);
-  const std::size_t n = fine.size(), c = coarse.size();
+  Thin_plate_energy_factors<FT> factors;
+  factors.fine = static_cast<std::size_t>((degree + 1) * (degree + 2) / 2);
+  factors.coarse = coarse.size();
+  const std::size_t n = factors.fine, c = factors.coarse;
   auto index_of = [degree](const Multi_index& a) {
-    // position in bernstein_indices(degree): rows i = degree .. a.i come first
+    // position in bernstein_indices(degree): rows i = degree .. a.i + 1 come first
     const int before = (degree - a.i) * (degree - a.i + 1) / 2;
     return static_cast<std::size_t>(before + (degree - a.i - a.j));
   };
-  // L[p] (c x n): the Bernstein coefficients of degree m-2 of the p-th second derivative
-  // (xx, xy, yy), without the factor m(m-1).
+  // The factor m(m-1) of the second derivatives goes into M.
   auto second = [&](const std::array<FT, 3>& u, const std::array<FT, 3>& w) {
     std::vector<FT> l(c * n, FT(0));
     for (std::size_t g = 0; g < c; ++g)
@@ -85,9 +103,9 @@ auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, co
         }
     return l;
   };
-  const std::array<std::vector<FT>, 3> L{{second(ex, ex), second(ex, ey), second(ey, ey)}};
-  const std::array<FT, 3> factor{{FT(1), FT(2), FT(1)}};
-  // Bernstein Gram matrix of degree m-2 (without |T|).
+  factors.second = {{second(ex, ex), second(ex, ey), second(ey, ey)}};
+  // Explicit return types: with GMP's expression templates, `auto` would return
+  // expressions of destroyed temporaries.
   auto factorial = [](int k) -> FT {
     FT f(1);
     for (int i = 2; i <= k; ++i)
@@ -100,31 +118,55 @@ auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, co
   const int d = degree - 2;
   const FT scale = FT(degree * (degree - 1)) * FT(degree * (degree - 1)) * area /
                    (FT((2 * d + 1) * (2 * d + 2)) / FT(2));
-  std::vector<FT> M(c * c);
+  factors.gram.resize(c * c);
   for (std::size_t a = 0; a < c; ++a)
     for (std::size_t b = 0; b < c; ++b) {
       const Multi_index sum{coarse[a].i + coarse[b].i, coarse[a].j + coarse[b].j,
                             coarse[a].k + coarse[b].k};
-      M[a * c + b] =
+      factors.gram[a * c + b] =
           scale * multinomial(d, coarse[a]) * multinomial(d, coarse[b]) / multinomial(2 * d, sum);
     }
+  return factors;
+}
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief returns the Gram matrix of the thin-plate energy of a polynomial of degree `degree`
+  in Bernstein–Bézier form over the triangle \f$(r,s,t)\f$: the symmetric matrix \f$G\f$,
+  of size \f$\binom{m+2}{2}\f$ in the order of `bernstein_indices()`, with
+
+  \f[ \int_{rst} f_{xx}^2 + 2 f_{xy}^2 + f_{yy}^2 \, dA \;=\; b^T G\, b \f]
+
+  for the control values \f$b\f$ of \f$f\f$, exact in `FT`
+  (\f$G = \sum_p w_p L_p^T M L_p\f$, `thin_plate_energy_factors()`). The energy is invariant
+  under rotations and vanishes exactly on linear functions; it is the quadratic form of the
+  `Fit::Minimal_energy` fit. In floating point prefer the factors: \f$b^T G b\f$ cancels
+  catastrophically on thin triangles.
+  \pre `degree >= 2` and \f$(r,s,t)\f$ not collinear
+  \returns the matrix row by row (`G[a * n + b]`, n the number of indices)
+*/
+template <class Point_2>
+auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, const Point_2& t) {
+  const auto factors = thin_plate_energy_factors(degree, r, s, t);
+  using FT = std::decay_t<decltype(factors.gram.front())>;
+  const std::size_t n = factors.fine, c = factors.coarse;
   std::vector<FT> G(n * n, FT(0));
   std::vector<FT> ML(c * n);
   for (int p = 0; p < 3; ++p) {
-    const auto& l = L[std::size_t(p)];
+    const auto& l = factors.second[std::size_t(p)];
     for (std::size_t a = 0; a < c; ++a)
       for (std::size_t j = 0; j < n; ++j) {
         FT sum(0);
         for (std::size_t b = 0; b < c; ++b)
           if (!CGAL::is_zero(l[b * n + j]))
-            sum = sum + M[a * c + b] * l[b * n + j];
+            sum = sum + factors.gram[a * c + b] * l[b * n + j];
         ML[a * n + j] = sum;
       }
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t a = 0; a < c; ++a) {
         if (CGAL::is_zero(l[a * n + i]))
           continue;
-        const FT li = factor[std::size_t(p)] * l[a * n + i];
+        const FT li = FT(factors.weight[std::size_t(p)]) * l[a * n + i];
         for (std::size_t j = 0; j < n; ++j)
           G[i * n + j] = G[i * n + j] + li * ML[a * n + j];
       }
@@ -135,8 +177,8 @@ auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, co
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief returns the thin-plate energy \f$\int f_{xx}^2 + 2 f_{xy}^2 + f_{yy}^2\f$ of a
-  functional patch over its domain triangle, exactly in `FT`
-  (`thin_plate_energy_matrix()`). Sum it over the patches of a spline for the spline's
+  functional patch over its domain triangle, exactly in `FT`, differences first
+  (`thin_plate_energy_factors()`). Sum it over the patches of a spline for the spline's
   energy: the measure of fairness the `Fit::Minimal_energy` fit minimises.
 */
 template <class GeomTraits>
@@ -145,18 +187,32 @@ typename GeomTraits::FT thin_plate_energy(const Bezier_triangle<GeomTraits>& pat
   const int m = patch.degree();
   if (m < 2)
     return FT(0);
-  const auto G = thin_plate_energy_matrix(m, patch.vertex(0), patch.vertex(1), patch.vertex(2));
+  const auto factors =
+      thin_plate_energy_factors(m, patch.vertex(0), patch.vertex(1), patch.vertex(2));
   const auto indices = bernstein_indices(m);
-  const std::size_t n = indices.size();
-  std::vector<FT> b(n);
+  const std::size_t n = factors.fine, c = factors.coarse;
+  std::vector<FT> b(n), d(c);
   for (std::size_t i = 0; i < n; ++i)
     b[i] = patch.control_point(indices[i]);
   FT energy(0);
-  for (std::size_t i = 0; i < n; ++i) {
-    FT row(0);
-    for (std::size_t j = 0; j < n; ++j)
-      row = row + G[i * n + j] * b[j];
-    energy = energy + b[i] * row;
+  for (int p = 0; p < 3; ++p) {
+    // d = L_p b, then w_p d^T M d
+    const auto& l = factors.second[std::size_t(p)];
+    for (std::size_t a = 0; a < c; ++a) {
+      FT sum(0);
+      for (std::size_t i = 0; i < n; ++i)
+        if (!CGAL::is_zero(l[a * n + i]))
+          sum = sum + l[a * n + i] * b[i];
+      d[a] = sum;
+    }
+    FT quadratic(0);
+    for (std::size_t a = 0; a < c; ++a) {
+      FT row(0);
+      for (std::size_t e = 0; e < c; ++e)
+        row = row + factors.gram[a * c + e] * d[e];
+      quadratic = quadratic + d[a] * row;
+    }
+    energy = energy + FT(factors.weight[std::size_t(p)]) * quadratic;
   }
   return energy;
 }
