@@ -49,6 +49,9 @@ int run_c1(const std::vector<std::string>& args) {
                     "with --fit energy: stop interpolating and minimise sum of squared residuals "
                     "+ LAMBDA h^2 thin-plate energy (h^2 the area per data point; 0 interpolates)",
                     "0");
+  parser.add_switch("gradients",
+                    "the input has known gradients, 'x y z zx zy' per line: the spline "
+                    "interpolates them at every vertex");
   parser.add_switch("rescale",
                     "triangulate and fit with y scaled by the power of two that makes its extent "
                     "closest to x's (for coordinates in different units, like scipy's "
@@ -79,6 +82,7 @@ int run_c1(const std::vector<std::string>& args) {
   job.exact = parsed.is_set("exact");
   job.dimension = parsed.is_set("dimension");
   job.rescale = parsed.is_set("rescale");
+  job.gradients = parsed.is_set("gradients");
   job.levels = static_cast<int>(parsed.integer("levels"));
   job.degree = static_cast<int>(parsed.integer_in("degree", 0, 5));
   job.degree_selection = parsed.value("degree-selection");

@@ -45,6 +45,7 @@ struct Input {
   std::string kind;
   std::size_t merged_duplicates = 0;
   int y_exponent = 0; // --rescale: the domain's y is the data's times 2^y_exponent
+  std::vector<std::array<typename K::FT, 2>> gradients; // --gradients, by domain vertex
 };
 
 // --rescale: the power of two that brings the extent in y closest to the extent in x
@@ -84,11 +85,11 @@ TS::Planar_domain<K> scaled_y(const TS::Planar_domain<K>& domain, int exponent) 
 }
 
 template <class K>
-Input<K> read_input(const std::string& path, bool rescale) {
+Input<K> read_input(const std::string& path, bool rescale, bool gradients) {
   if (path.empty()) {
     auto [domain, values] = TS::demo_data<K>();
-    Input<K> input{std::move(domain), std::move(values), "embedded demo data (L-shape with a hole)",
-                   0};
+    Input<K> input{
+        std::move(domain), std::move(values), "embedded demo data (L-shape with a hole)", 0, 0, {}};
     if (rescale) {
       input.y_exponent = rescale_exponent(input.domain.points());
       input.domain = scaled_y(input.domain, input.y_exponent);
@@ -96,23 +97,41 @@ Input<K> read_input(const std::string& path, bool rescale) {
     return input;
   }
   const std::string ext = lowercase_extension(path);
+  if (gradients && ext != "xyz" && ext != "txt")
+    throw TS::Invalid_input("'" + path +
+                            "': --gradients needs scattered points 'x y z zx zy' "
+                            "(.xyz)");
   if (ext == "xyz" || ext == "txt") {
     std::ifstream in = open_input(path);
-    TS::Scattered_data<K> data = TS::read_xyz<K>(in, path);
-    // Rescaled before triangulating: the Delaunay triangulation of the rescaled points.
+    TS::Scattered_data<K> data = TS::read_xyz<K>(in, path, gradients);
+    // Rescaled before triangulating: the Delaunay triangulation of the rescaled points
+    // (and dz/dy' = dz/dy / 2^exponent).
     const int exponent = rescale ? rescale_exponent(data.points) : 0;
     scale_y(data.points, exponent);
-    auto [domain, values] = TS::delaunay_domain(data);
-    return {std::move(domain), std::move(values), "scattered points, Delaunay triangulation",
-            data.merged_duplicates, exponent};
+    std::vector<std::size_t> order;
+    auto [domain, values] = TS::delaunay_domain(data, &order);
+    Input<K> input{
+        std::move(domain),      std::move(values), "scattered points, Delaunay triangulation",
+        data.merged_duplicates, exponent,          {}};
+    using FT = typename K::FT;
+    const FT y_factor =
+        exponent >= 0 ? FT(std::ldexp(1.0, exponent)) : FT(1) / FT(std::ldexp(1.0, -exponent));
+    if (gradients)
+      for (std::size_t i : order)
+        input.gradients.push_back({{data.gradients[i][0], FT(data.gradients[i][1] / y_factor)}});
+    return input;
   }
   if (ext == "off" || ext == "obj" || ext == "ply" || ext == "stl") {
     auto [domain, values] = TS::read_mesh_domain<K>(path);
     const int exponent = rescale ? rescale_exponent(domain.points()) : 0;
     if (exponent != 0)
       domain = scaled_y(domain, exponent);
-    return {std::move(domain), std::move(values), "triangle mesh, (x, y) as the domain", 0,
-            exponent};
+    return {std::move(domain),
+            std::move(values),
+            "triangle mesh, (x, y) as the domain",
+            0,
+            exponent,
+            {}};
   }
   throw TS::Invalid_input("'" + path + "': unknown input format '." + ext +
                           "' (expected .xyz for scattered points, or .off/.obj/.ply/.stl)");
@@ -139,7 +158,7 @@ Json run(const C1_job& job, std::ostream& out) {
                           std::filesystem::file_size(job.input, size_error) > 4000000 &&
                           !size_error;
   progress("c1", "reading and triangulating " + job.input, large_file);
-  Input<K> input = read_input<K>(job.input, job.rescale);
+  Input<K> input = read_input<K>(job.input, job.rescale, job.gradients);
   timings.set("read_and_triangulate", clock.lap());
   // About a second of work from here on: 10^5 triangles exact, 10^6 in double.
   const bool large = input.domain.number_of_faces() > (job.exact ? 20000u : 300000u);
@@ -173,7 +192,7 @@ Json run(const C1_job& job, std::ostream& out) {
       spline, input.values, fit, job.degree,
       job.degree_selection == "largest" ? TS::Degree_selection::Largest
                                         : TS::Degree_selection::Cross_validation,
-      job.smoothing);
+      job.smoothing, input.gradients);
   // Fitted in rescaled coordinates: back onto the data's own (exact, see map_domain()).
   if (input.y_exponent != 0)
     spline.map_domain(scaled_y(spline.domain(), -input.y_exponent));
@@ -245,6 +264,7 @@ Json run(const C1_job& job, std::ostream& out) {
   report.set("fix", job.fix);
   if (job.rescale)
     report.set("rescale_y_factor", std::ldexp(1.0, input.y_exponent));
+  report.set("gradients", job.gradients ? "given" : "estimated");
   if (fit == TS::Fit::Minimal_energy)
     report.set("smoothing", job.smoothing);
   if (fit == TS::Fit::Local_polynomial || fit == TS::Fit::Least_squares ||
@@ -396,6 +416,8 @@ Json run(const C1_job& job, std::ostream& out) {
       out << " (exact rank dimension " << *rank_dimension << ")";
     out << "\n  fit: " << job.fit << ", arithmetic: " << (job.exact ? "exact rationals" : "double")
         << ", largest interpolation error: " << interpolation_error << "\n";
+    if (job.gradients)
+      out << "  gradients: given at every vertex, interpolated\n";
     if (input.y_exponent != 0)
       out << "  rescaled: triangulated and fitted with y times 2^" << input.y_exponent << "\n";
     if (fit == TS::Fit::Adaptive) {
@@ -489,6 +511,8 @@ Json run_c1_job(const C1_job& job, std::ostream& out) {
     throw Usage_error("--smoothing must be a finite number >= 0");
   if (job.smoothing > 0 && job.fit != "energy")
     throw Usage_error("--smoothing needs --fit energy");
+  if (job.gradients && job.fit == "approximate")
+    throw Usage_error("--gradients needs an interpolating fit (not approximate)");
   if (job.degree_selection != "cv" && job.degree_selection != "largest")
     throw Usage_error("--degree-selection must be cv or largest, not '" + job.degree_selection +
                       "'");

@@ -291,6 +291,38 @@ TYPED_TEST(ScatteredData, MergesDuplicatesWithTheSameHeight) {
   EXPECT_EQ(data.values[3], typename K::FT(4));
 }
 
+TYPED_TEST(ScatteredData, ReadsGradientsAndKeepsThemWithTheirPoints) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  std::istringstream in("0 0 1 0.5 -1\n1 0 2 0 0\n0 1 3 1 2\n1 0 2 0 0\n");
+  const TS::Scattered_data<K> data = TS::read_xyz<K>(in, "g.xyz", true);
+  ASSERT_EQ(data.gradients.size(), 3u);
+  EXPECT_EQ(data.merged_duplicates, 1u);
+  EXPECT_EQ(data.gradients[0][0], TS::parse_number<FT>("0.5"));
+  EXPECT_EQ(data.gradients[2][1], FT(2));
+  // The Delaunay numbering carries them along.
+  std::vector<std::size_t> order;
+  const auto [domain, values] = TS::delaunay_domain(data, &order);
+  ASSERT_EQ(order.size(), 3u);
+  for (std::size_t v = 0; v < 3; ++v) {
+    EXPECT_EQ(domain.point(std::uint32_t(v)), data.points[order[v]]);
+    EXPECT_EQ(values[v], data.values[order[v]]);
+  }
+  auto read = [](const std::string& text) {
+    return [text] {
+      std::istringstream bad(text);
+      TS::read_xyz<K>(bad, "g.xyz", true);
+    };
+  };
+  EXPECT_TRUE(throws_with(read("0 0 1 0 0\n1 0 2\n"), {"g.xyz:2:", "5 numbers (x y z zx zy)"}));
+  EXPECT_TRUE(throws_with(read("0 0 1 0 0\n1 0 2 0 0\n0 1 3 1 1\n0 0 1 0 1\n"),
+                          {"g.xyz:1 and g.xyz:4", "different gradients"}));
+  EXPECT_TRUE(throws_with(read("0 0 1 0 nan\n"), {"g.xyz:1:"}));
+  // Five numbers without gradients: a hint.
+  std::istringstream five("0 0 1 0 0\n");
+  EXPECT_TRUE(throws_with([&] { TS::read_xyz<K>(five, "h.xyz"); }, {"h.xyz:1:", "--gradients"}));
+}
+
 TYPED_TEST(ScatteredData, RejectsBadInput) {
   using K = TypeParam;
   auto read = [](const std::string& text) {

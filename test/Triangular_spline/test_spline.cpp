@@ -1259,3 +1259,73 @@ TEST(Spline, MapDomainKeepsAnExactSplineC1UnderAffineMaps) {
   const auto other = random_delaunay<Exact_kernel>(31, 8);
   EXPECT_THROW(spline.map_domain(other), TS::Invalid_input);
 }
+
+TEST(GivenGradients, AreInterpolatedExactlyByEveryInterpolatingFit) {
+  // Exact build: a random cubic's values and gradients. Local and adaptive fits reproduce
+  // the cubic (the given gradients agree with its polynomials); every fit interpolates the
+  // gradients exactly at every vertex.
+  using FT = Exact_kernel::FT;
+  const auto domain = random_delaunay<Exact_kernel>(40, 31);
+  Random_rationals random(6);
+  const auto cubic = random.polynomial<Exact_kernel>(3);
+  std::vector<std::array<FT, 2>> gradients;
+  for (const auto& p : domain.points()) {
+    // d/dx and d/dy of sum c_hk x^h y^k
+    FT gx(0), gy(0);
+    for (int h = 0; h <= 3; ++h)
+      for (int k = 0; h + k <= 3; ++k) {
+        const FT c = cubic.coefficient(h, k);
+        FT xh(1), yk(1), xh1(1), yk1(1);
+        for (int i = 0; i < h; ++i)
+          xh = xh * p.x();
+        for (int i = 0; i < k; ++i)
+          yk = yk * p.y();
+        for (int i = 0; i + 1 < h; ++i)
+          xh1 = xh1 * p.x();
+        for (int i = 0; i + 1 < k; ++i)
+          yk1 = yk1 * p.y();
+        if (h > 0)
+          gx = gx + FT(h) * c * xh1 * yk;
+        if (k > 0)
+          gy = gy + FT(k) * c * xh * yk1;
+      }
+    gradients.push_back({{gx, gy}});
+  }
+  const auto z = sample(domain, cubic);
+  for (Fit fit : {Fit::Local_polynomial, Fit::Adaptive, Fit::Minimal_energy, Fit::Tangent_planes,
+                  Fit::Interpolate, Fit::Least_squares}) {
+    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+    TS::fit_vertex_data(spline, z, fit, 3, TS::Degree_selection::Cross_validation, 0, gradients);
+    EXPECT_TRUE(certify(spline).certified) << int(fit);
+    if (fit == Fit::Local_polynomial || fit == Fit::Adaptive) {
+      EXPECT_TRUE(reproduces(spline, cubic)) << int(fit);
+    }
+    for (Index f = 0; f < domain.number_of_faces(); ++f) {
+      const auto patch = spline.patch(f);
+      for (int i = 0; i < 3; ++i) {
+        const Index v = domain.face(f)[std::size_t(i)];
+        EXPECT_EQ(patch.partial_derivative(domain.point(v), 1, 0), gradients[v][0]) << int(fit);
+        EXPECT_EQ(patch.partial_derivative(domain.point(v), 0, 1), gradients[v][1]) << int(fit);
+      }
+    }
+  }
+  // Bad gradients.
+  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+  auto fit_with = [&](Fit fit, const std::vector<std::array<FT, 2>>& g) {
+    TS::fit_vertex_data(spline, z, fit, 3, TS::Degree_selection::Cross_validation, 0, g);
+  };
+  EXPECT_THROW(fit_with(Fit::Adaptive, {gradients.begin(), gradients.end() - 1}),
+               TS::Invalid_input);
+  C1_quintic_spline<Exact_kernel> symmetric(domain, Corner_frame::Symmetric_stars);
+  EXPECT_THROW(TS::fit_vertex_data(symmetric, z, Fit::Approximate, 3,
+                                   TS::Degree_selection::Cross_validation, 0, gradients),
+               TS::Invalid_input);
+  std::vector<std::array<double, 2>> not_finite(domain.number_of_vertices(), {{0.0, 0.0}});
+  not_finite[3][1] = std::nan("");
+  const auto fast = random_delaunay<Epick>(40, 31);
+  C1_quintic_spline<Epick> fast_spline(fast, Corner_frame::Corner_and_two_stars);
+  EXPECT_THROW(TS::fit_vertex_data(fast_spline, std::vector<double>(fast.number_of_vertices(), 1.0),
+                                   Fit::Adaptive, 3, TS::Degree_selection::Cross_validation, 0,
+                                   not_finite),
+               TS::Invalid_input);
+}

@@ -247,14 +247,16 @@ void set_solved_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
 }
 
 // Least-squares choice of the free values (Fit::Least_squares): corners fixed to the data,
-// then min sum_s |value(s) - target(s)|^2 over all slots by the normal equations.
-template <class GeomTraits, class Value, class Target>
+// the free slots for which fixed(s, value) is true to that value, then min sum_s |value(s) -
+// target(s)|^2 over all slots by the normal equations.
+template <class GeomTraits, class Value, class Target, class Fixed>
 void least_squares_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
-                               const std::vector<Value>& values, const Target& target) {
+                               const std::vector<Value>& values, const Target& target,
+                               const Fixed& fixed) {
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   using Traits = Value_traits<Value>;
   constexpr int D = Traits::dimension;
-  const auto a = affine_slots(spline, values, true, [](Slot, Value&) { return false; });
+  const auto a = affine_slots(spline, values, true, fixed);
   std::vector<Eigen::Triplet<double>> triplets;
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Eigen::Index(a.unknowns), D);
   for (std::size_t s = 0; s < spline.number_of_slots(); ++s) {
@@ -433,16 +435,24 @@ struct Fit_statistics {
   Every mode reproduces data sampled from a linear function exactly (every prescribed point
   is then the linear function's polar value, and propagation preserves it; for
   `Local_polynomial` and `Least_squares` with `local_degree` at least 1).
-  `local_degree` is the largest degree of the local polynomials of `Local_polynomial` and
-  `Least_squares` (0..5).
-  \throws Invalid_input if `values` has the wrong size or a non-finite value, or if a fit
-  other than `Approximate` is asked of a spline whose corner points are not free.
+  `local_degree` is the largest degree of the local polynomials of `Local_polynomial`,
+  `Least_squares` and `Adaptive` (0..5); `selection` how they choose it. `smoothing` (at least
+  0) is the \f$\lambda\f$ of `Minimal_energy`; 0 interpolates. `given_gradients` (one per
+  vertex, or empty to estimate them) are interpolated by every fit but `Approximate`: each
+  star point \f$f(v^4 w)\f$ becomes \f$z_v + \nabla z_v \cdot (w - v)/5\f$, so the spline's
+  gradient at every vertex is the given one (exactly with an exact number type); the other
+  free points follow the fit.
+  \throws Invalid_input if `values` or `given_gradients` has the wrong size or a non-finite
+  value, if `smoothing` is negative or not finite or given to another fit than
+  `Minimal_energy`, if gradients are given to `Approximate`, or if a fit other than
+  `Approximate` is asked of a spline whose corner points are not free.
 */
 template <class GeomTraits, class Value>
 Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
                                const std::vector<Value>& values, Fit fit, int local_degree = 3,
                                Degree_selection selection = Degree_selection::Cross_validation,
-                               double smoothing = 0) {
+                               double smoothing = 0,
+                               const std::vector<std::array<Value, 2>>& given_gradients = {}) {
   using FT = typename GeomTraits::FT;
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   const auto& domain = spline.domain();
@@ -455,9 +465,34 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
   if (fit != Fit::Approximate && spline.corner_frame() != Corner_frame::Corner_and_two_stars)
     throw Invalid_input("fit: interpolation needs corner points to be prescribed "
                         "(build the spline with Corner_frame::Corner_and_two_stars)");
+  const bool given = !given_gradients.empty();
+  if (given) {
+    if (given_gradients.size() != domain.number_of_vertices())
+      throw Invalid_input("fit: " + std::to_string(given_gradients.size()) + " gradients for " +
+                          std::to_string(domain.number_of_vertices()) + " vertices");
+    for (const auto& g : given_gradients)
+      if (!is_finite_value(g[0]) || !is_finite_value(g[1]))
+        throw Invalid_input("fit: non-finite gradient");
+    if (fit == Fit::Approximate)
+      throw Invalid_input("fit: given gradients need an interpolating fit (not approximate)");
+  }
   std::vector<std::array<Value, 2>> gradients;
   if (fit == Fit::Tangent_planes)
-    gradients = estimate_gradients(domain, values);
+    gradients = given ? given_gradients : estimate_gradients(domain, values);
+  // With given gradients every star point is the tangent plane's: z_v + g_v.(w - v)/5 for
+  // the star f(v^4 w). Its corner region is then that plane, so the spline interpolates
+  // the gradient at every vertex.
+  auto given_star = [&](Slot s, Value& star) {
+    if (!given || spline.kind(s) != Slot_kind::Star)
+      return false;
+    const auto label = spline.polar_label(s);
+    const auto [v, w] = label[0].second == 4 ? std::pair(label[0].first, label[1].first)
+                                             : std::pair(label[1].first, label[0].first);
+    const FT dx = (domain.point(w).x() - domain.point(v).x()) / FT(5);
+    const FT dy = (domain.point(w).y() - domain.point(v).y()) / FT(5);
+    star = values[v] + dx * given_gradients[v][0] + dy * given_gradients[v][1];
+    return true;
+  };
   std::optional<Local_polynomials<GeomTraits, Value>> local;
   if (fit == Fit::Local_polynomial || fit == Fit::Least_squares || fit == Fit::Adaptive)
     local.emplace(domain, values, local_degree, selection);
@@ -468,8 +503,10 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
   // The value a slot should take from the data: polar blend, or tangent plane of the
   // nearest corner(s) at the slot's domain point.
   auto target = [&](Slot s) {
-    const auto label = spline.polar_label(s);
     Value v = Value_traits<Value>::zero();
+    if (given_star(s, v))
+      return v;
+    const auto label = spline.polar_label(s);
     if (fit == Fit::Approximate || fit == Fit::Interpolate) {
       for (const auto& [vertex, multiplicity] : label)
         v = v + (FT(multiplicity) / FT(5)) * values[vertex];
@@ -526,8 +563,7 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     blend_energy = untrusted > 0 && !statistics.energy_skipped;
   }
   if (fit == Fit::Minimal_energy) {
-    internal::minimal_energy_free_values(spline, values, smoothing,
-                                         [](Slot, Value&) { return false; });
+    internal::minimal_energy_free_values(spline, values, smoothing, given_star);
   } else if (blend_energy) {
     auto nearest = [&](Slot s) {
       const auto label = spline.polar_label(s);
@@ -563,11 +599,13 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       }
       front.swap(next);
     }
-    internal::minimal_energy_free_values(spline, values, 0, [&](Slot s, Value& given) {
+    internal::minimal_energy_free_values(spline, values, 0, [&](Slot s, Value& fixed) {
+      if (given_star(s, fixed))
+        return true;
       for (std::uint32_t v : nearest(s))
         if (ring[v] >= 0)
           return false;
-      given = target(s);
+      fixed = target(s);
       return true;
     });
     // Blend: each untrusted vertex's share of a slot moves from its polynomial to the
@@ -575,6 +613,11 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     for (Slot s : spline.free_slots()) {
       if (s < domain.number_of_vertices())
         continue;
+      Value star;
+      if (given_star(s, star)) {
+        spline.set_free_value(s, star);
+        continue;
+      }
       const auto ties = nearest(s);
       bool trusted = true;
       for (std::uint32_t v : ties)
@@ -600,7 +643,7 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       spline.set_free_value(s, ties.size() == 1 ? v : Value((FT(1) / FT(int(ties.size()))) * v));
     }
   } else if (fit == Fit::Least_squares) {
-    internal::least_squares_free_values(spline, values, target);
+    internal::least_squares_free_values(spline, values, target, given_star);
   } else {
     for (Slot s : spline.free_slots())
       spline.set_free_value(s, target(s));

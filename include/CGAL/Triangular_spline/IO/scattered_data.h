@@ -15,6 +15,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <istream>
 #include <numeric>
@@ -37,6 +38,9 @@ struct Scattered_data {
   std::vector<typename GeomTraits::Point_2> points;
   /// the heights \f$z_i\f$, one per point
   std::vector<typename GeomTraits::FT> values;
+  /// the gradients \f$(\partial z/\partial x, \partial z/\partial y)\f$, one per point when
+  /// read with gradients, else empty
+  std::vector<std::array<typename GeomTraits::FT, 2>> gradients;
   /// the number of input lines dropped because they repeated an earlier line's point and
   /// height
   std::size_t merged_duplicates = 0;
@@ -44,7 +48,8 @@ struct Scattered_data {
 
 /*!
   \ingroup PkgTriangularSplineIO
-  \brief reads scattered height data, one point `x y z` per line.
+  \brief reads scattered height data, one point `x y z` per line (`x y z zx zy` with
+  `with_gradients`: the gradient of the height too).
 
   Numbers are read with `parse_number<FT>()`, so with an exact kernel decimals are exact
   (`0.1` is 1/10). Blank lines are skipped, and `#` starts a comment that runs to the end of
@@ -55,17 +60,20 @@ struct Scattered_data {
   \param input the stream to read
   \param source the name used in error messages (usually the file name)
   \throws Invalid_input whose message starts with `source:line` for a line without exactly
-  three numbers or with an invalid number (garbage, NaN, infinity, magnitude above
-  \f$10^{150}\f$), and names both lines for two points with the same \f$(x,y)\f$ and
-  different heights; also thrown if fewer than three distinct points remain or if all
-  points are collinear (no triangle can be built).
+  three numbers (five with gradients) or with an invalid number (garbage, NaN, infinity, magnitude
+  above \f$10^{150}\f$), and names both lines for two points with the same \f$(x,y)\f$ and different
+  heights (or gradients); also thrown if fewer than three distinct points remain or if all points
+  are collinear (no triangle can be built).
 */
 template <class GeomTraits>
-Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& source) {
+Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& source,
+                                    bool with_gradients = false) {
   using FT = typename GeomTraits::FT;
   using Point_2 = typename GeomTraits::Point_2;
+  const std::size_t columns = with_gradients ? 5 : 3;
   std::vector<Point_2> points;
   std::vector<FT> values;
+  std::vector<std::array<FT, 2>> gradients;
   std::vector<std::size_t> lines;
   std::string line;
   for (std::size_t number = 1; std::getline(input, line); ++number) {
@@ -73,19 +81,23 @@ Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& sour
     if (tokens.empty())
       continue;
     const std::string where = source + ":" + std::to_string(number) + ": ";
-    if (tokens.size() != 3)
-      throw Invalid_input(where + "expected 3 numbers (x y z), found " +
-                          std::to_string(tokens.size()) + " fields");
-    FT c[3];
-    for (int i = 0; i < 3; ++i) {
+    if (tokens.size() != columns)
+      throw Invalid_input(
+          where + "expected " + (with_gradients ? "5 numbers (x y z zx zy)" : "3 numbers (x y z)") +
+          ", found " + std::to_string(tokens.size()) + " fields" +
+          (tokens.size() == 5 && !with_gradients ? " (gradients? see --gradients)" : ""));
+    FT c[5];
+    for (std::size_t i = 0; i < columns; ++i) {
       try {
-        c[i] = parse_number<FT>(tokens[static_cast<std::size_t>(i)]);
+        c[i] = parse_number<FT>(tokens[i]);
       } catch (const Invalid_input& e) {
         throw Invalid_input(where + e.what());
       }
     }
     points.emplace_back(c[0], c[1]);
     values.push_back(c[2]);
+    if (with_gradients)
+      gradients.push_back({{c[3], c[4]}});
     lines.push_back(number);
   }
   if (input.bad())
@@ -109,6 +121,10 @@ Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& sour
                           std::to_string(lines[second]) + ": the same point " +
                           internal::point_to_string(points[first]) + " has different heights " +
                           format_number(values[first]) + " and " + format_number(values[second]));
+    if (with_gradients && gradients[first] != gradients[second])
+      throw Invalid_input(source + ":" + std::to_string(lines[first]) + " and " + source + ":" +
+                          std::to_string(lines[second]) + ": the same point " +
+                          internal::point_to_string(points[first]) + " has different gradients");
     keep[second] = 0;
     order[i] = first; // later copies compare with the kept one
     ++data.merged_duplicates;
@@ -117,6 +133,8 @@ Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& sour
     if (keep[i]) {
       data.points.push_back(points[i]);
       data.values.push_back(values[i]);
+      if (with_gradients)
+        data.gradients.push_back(gradients[i]);
     }
   const std::size_t n = data.points.size();
   if (n < 3)
@@ -140,14 +158,16 @@ Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& sour
   The triangulation is `CGAL::Delaunay_triangulation_2` (for cocircular points CGAL's
   deterministic choice); its domain is the convex hull of the points. Domain vertex `v` is
   the input point carrying value `second[v]`; vertex indices follow CGAL's face order, not
-  the input order.
+  the input order; `input_index`, if given, receives for each domain vertex the index of its
+  point in `data`.
   \tparam GeomTraits a model of `DelaunayTriangulationTraits_2` and `Kernel`
   \throws Invalid_input if `points` and `values` differ in size, two points coincide, or all
   points are collinear (data from `read_xyz()` passes these checks)
 */
 template <class GeomTraits>
 std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
-delaunay_domain(const Scattered_data<GeomTraits>& data) {
+delaunay_domain(const Scattered_data<GeomTraits>& data,
+                std::vector<std::size_t>* input_index = nullptr) {
   using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, GeomTraits>;
   using Fb = CGAL::Triangulation_face_base_2<GeomTraits>;
   using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
@@ -175,6 +195,11 @@ delaunay_domain(const Scattered_data<GeomTraits>& data) {
   values.reserve(handles.size());
   for (const auto& h : handles)
     values.push_back(data.values[h->info()]);
+  if (input_index) {
+    input_index->clear();
+    for (const auto& h : handles)
+      input_index->push_back(h->info());
+  }
   return {std::move(domain), std::move(values)};
 }
 
