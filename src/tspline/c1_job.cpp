@@ -513,6 +513,8 @@ Json run_c1_job(const C1_job& job, std::ostream& out) {
     throw Usage_error("--smoothing needs --fit energy");
   if (job.gradients && job.fit == "approximate")
     throw Usage_error("--gradients needs an interpolating fit (not approximate)");
+  if (job.gradients && job.smoothing > 0)
+    throw Usage_error("--gradients interpolates: it does not go with --smoothing");
   if (job.degree_selection != "cv" && job.degree_selection != "largest")
     throw Usage_error("--degree-selection must be cv or largest, not '" + job.degree_selection +
                       "'");

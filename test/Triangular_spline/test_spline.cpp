@@ -1316,6 +1316,9 @@ TEST(GivenGradients, AreInterpolatedExactlyByEveryInterpolatingFit) {
   };
   EXPECT_THROW(fit_with(Fit::Adaptive, {gradients.begin(), gradients.end() - 1}),
                TS::Invalid_input);
+  EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::Minimal_energy, 3,
+                                   TS::Degree_selection::Cross_validation, 1.0, gradients),
+               TS::Invalid_input);
   C1_quintic_spline<Exact_kernel> symmetric(domain, Corner_frame::Symmetric_stars);
   EXPECT_THROW(TS::fit_vertex_data(symmetric, z, Fit::Approximate, 3,
                                    TS::Degree_selection::Cross_validation, 0, gradients),

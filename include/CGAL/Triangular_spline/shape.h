@@ -444,8 +444,8 @@ struct Fit_statistics {
   free points follow the fit.
   \throws Invalid_input if `values` or `given_gradients` has the wrong size or a non-finite
   value, if `smoothing` is negative or not finite or given to another fit than
-  `Minimal_energy`, if gradients are given to `Approximate`, or if a fit other than
-  `Approximate` is asked of a spline whose corner points are not free.
+  `Minimal_energy` or with gradients, if gradients are given to `Approximate`, or if a fit
+  other than `Approximate` is asked of a spline whose corner points are not free.
 */
 template <class GeomTraits, class Value>
 Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
@@ -475,6 +475,9 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
         throw Invalid_input("fit: non-finite gradient");
     if (fit == Fit::Approximate)
       throw Invalid_input("fit: given gradients need an interpolating fit (not approximate)");
+    if (smoothing > 0)
+      throw Invalid_input("fit: given gradients are interpolated; smoothing would move the "
+                          "values they belong to");
   }
   std::vector<std::array<Value, 2>> gradients;
   if (fit == Fit::Tangent_planes)
