@@ -27,12 +27,26 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace tspline {
 
 namespace {
+
+std::string format_number(double x) {
+  std::ostringstream out;
+  out << std::setprecision(3) << x;
+  return out.str();
+}
+
+// log10 of a residual for JSON: null for an exact zero (-infinity).
+Json log10_json(double x) {
+  return std::isfinite(x) ? Json(x) : Json();
+}
 
 namespace TS = CGAL::Triangular_spline;
 using Fast = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -162,6 +176,14 @@ Json run(const C1_job& job, std::ostream& out) {
   timings.set("read_and_triangulate", clock.lap());
   // About a second of work from here on: 10^5 triangles exact, 10^6 in double.
   const bool large = input.domain.number_of_faces() > (job.exact ? 20000u : 300000u);
+  // Exact arithmetic runs at several thousand triangles per second (issue 12): say what to
+  // expect before a long silence.
+  if (job.exact && input.domain.number_of_faces() > 50000u)
+    std::cerr << "tspline c1: note: --exact on " << input.domain.number_of_faces()
+              << " triangles takes about "
+              << format_number(input.domain.number_of_faces() / 5000.0 / 60.0)
+              << " minutes (about 5000 triangles per second); the double build takes seconds and "
+                 "reports its round-off\n";
   const std::size_t input_vertices = input.domain.number_of_vertices();
 
   // Degenerate frames are re-routed by the plan; the perturbation fix moves vertices first.
@@ -209,16 +231,21 @@ Json run(const C1_job& job, std::ostream& out) {
            std::string(job.exact ? "certifying exactly " : "checking ") +
                std::to_string(d.number_of_interior_edges()) + " interior edges",
            large);
-  const TS::C1_certificate certificate = TS::certify_C1(d, patch, 1e-10 * scale);
+  const TS::C1_certificate certificate = TS::certify_C1(d, patch, job.exact ? 0 : 1e-10 * scale);
   timings.set("certify", clock.lap());
 
   std::optional<long long> morgan_scott = TS::morgan_scott_dimension(d);
-  std::optional<std::size_t> rank_dimension;
+  // The dimension from the rank of the C^1 conditions modulo a prime: an upper bound, which
+  // proves the dimension when it meets the scheme's free count (a lower bound). The rational
+  // rank (exact_spline_dimension()) takes minutes from 50 scattered points on.
+  std::optional<TS::Dimension_bound> dimension_bound;
   if (job.dimension) {
-    progress("c1", "computing the exact rank of the C^1 conditions", large);
-    rank_dimension = TS::exact_spline_dimension(d);
-    timings.set("dimension_exact", clock.lap());
+    progress("c1", "computing the rank of the C^1 conditions", large);
+    dimension_bound = TS::spline_dimension_upper_bound(d);
+    timings.set("dimension", clock.lap());
   }
+  const bool dimension_proven =
+      dimension_bound && dimension_bound->upper_bound == spline.number_of_free_parameters();
 
   // Honesty about the surface: does it go through the data, and does it stay in the data's
   // range? The sampled range (vertices and face centroids) is a lower bound of the surface's
@@ -231,15 +258,26 @@ Json run(const C1_job& job, std::ostream& out) {
     interpolation_error = (std::max)(
         interpolation_error, std::abs(CGAL::to_double(spline.value(spline.vertex_slot(v))) - z));
   }
-  // The fairness measure the energy fit minimises, reported for every fit to compare them.
+  // The fairness measure the energy fit minimises, reported for every fit to compare them,
+  // and the sampled range: measurements, not proofs, so taken in double also for exact
+  // builds (the exact energies of propagated rationals cost 27 s for 200 points). A patch
+  // too thin for double falls back to its exact form.
   double thin_plate = 0;
-  for (std::uint32_t f = 0; f < d.number_of_faces(); ++f)
-    thin_plate += CGAL::to_double(TS::thin_plate_energy(spline.patch(f)));
   double sampled_min = data_min, sampled_max = data_max;
   for (std::uint32_t f = 0; f < d.number_of_faces(); ++f) {
     const auto& t = d.face(f);
-    const double z = CGAL::to_double(
-        spline.patch(f).evaluate(CGAL::centroid(d.point(t[0]), d.point(t[1]), d.point(t[2]))));
+    double energy = 0, z = 0;
+    const auto exact_patch = spline.patch(f);
+    try {
+      const auto patch = TS::convert_patch<Fast>(exact_patch);
+      energy = TS::thin_plate_energy(patch);
+      z = patch.evaluate(CGAL::centroid(patch.vertex(0), patch.vertex(1), patch.vertex(2)));
+    } catch (const TS::Invalid_input&) {
+      energy = CGAL::to_double(TS::thin_plate_energy(exact_patch));
+      z = CGAL::to_double(
+          exact_patch.evaluate(CGAL::centroid(d.point(t[0]), d.point(t[1]), d.point(t[2]))));
+    }
+    thin_plate += energy;
     sampled_min = (std::min)(sampled_min, z);
     sampled_max = (std::max)(sampled_max, z);
   }
@@ -251,6 +289,40 @@ Json run(const C1_job& job, std::ostream& out) {
   const double data_span = data_max - data_min;
   const double overshoot = (std::max)(sampled_max - data_max, data_min - sampled_min);
   const bool overshoots = overshoot > 0.1 * data_span;
+
+  // Extreme scales (issue 13): double arithmetic says little when the domain's extents differ
+  // by many orders of magnitude, or when control values dwarf the data; say so and what helps.
+  double x_min = HUGE_VAL, x_max = -HUGE_VAL, y_min = HUGE_VAL, y_max = -HUGE_VAL;
+  for (std::uint32_t v = 0; v < d.number_of_vertices(); ++v) {
+    x_min = (std::min)(x_min, CGAL::to_double(d.point(v).x()));
+    x_max = (std::max)(x_max, CGAL::to_double(d.point(v).x()));
+    y_min = (std::min)(y_min, CGAL::to_double(d.point(v).y()));
+    y_max = (std::max)(y_max, CGAL::to_double(d.point(v).y()));
+  }
+  const double extent_ratio =
+      (std::max)(x_max - x_min, y_max - y_min) / (std::min)(x_max - x_min, y_max - y_min);
+  const std::string scale_hint = extent_ratio > 1e6 && input.y_exponent == 0
+                                     ? "; the x and y extents differ by a factor " +
+                                           format_number(extent_ratio) +
+                                           ": --rescale fits in coordinates of equal extent"
+                                     : "";
+  const double data_magnitude = (std::max)(std::abs(data_min), std::abs(data_max));
+  const double control_magnitude = (std::max)(std::abs(control_min), std::abs(control_max));
+  std::vector<std::string> warnings;
+  if (overshoots)
+    warnings.push_back("the surface leaves the data range [" + format_number(data_min) + ", " +
+                       format_number(data_max) + "] by " + format_number(overshoot) +
+                       " (more than 10% of its span) at sampled points; for noisy data use --fit "
+                       "energy --smoothing 1, a lower --degree overshoots less");
+  if (!(control_magnitude <= 1e6 * data_magnitude) && data_magnitude > 0)
+    warnings.push_back(
+        "control values reach " + format_number(control_magnitude) +
+        ", more than 10^6 times the data's largest |z| (" + format_number(data_magnitude) +
+        "): the surface is meaningless near the triangles that carry them" + scale_hint);
+  if (spline.max_propagation_weight() > 1e3)
+    warnings.push_back("propagation weights reach " +
+                       format_number(spline.max_propagation_weight()) +
+                       ": control points multiply the data's errors by that much" + scale_hint);
   timings.set("range_checks", clock.lap());
 
   std::size_t numerical_frames = 0;
@@ -295,7 +367,10 @@ Json run(const C1_job& job, std::ostream& out) {
   report.set("free_parameters", spline.number_of_free_parameters());
   report.set("free_parameters_formula", "3V + 3F + E_I + 3E_B + sigma");
   report.set("dimension_morgan_scott", morgan_scott ? Json(*morgan_scott) : Json());
-  report.set("dimension_exact", rank_dimension ? Json(*rank_dimension) : Json());
+  report.set("dimension", dimension_proven ? Json(spline.number_of_free_parameters()) : Json());
+  report.set("dimension_upper_bound",
+             dimension_bound ? Json(dimension_bound->upper_bound) : Json());
+  report.set("dimension_rank_prime", dimension_bound ? Json(dimension_bound->prime) : Json());
   report.set("singular_vertices", spline.singular_vertices().size());
   report.set("degenerate_frames", job.fix == "perturb" ? original_frames.frames.size()
                                                        : spline.degenerate_frames().size());
@@ -342,8 +417,10 @@ Json run(const C1_job& job, std::ostream& out) {
     moved.push_back(entry);
   }
   report.set("perturbed_vertices", moved);
-  // certified_c1 is a proof: exact builds only. Double builds report the tolerance check.
-  report.set("certified_c1", certificate.exact && certificate.certified);
+  // certified_c1 is a proof: exact builds only. Double builds report the tolerance check,
+  // and the tolerance that `tspline certify --tolerance` needs for the saved file.
+  report.set("verdict", TS::verdict_name(certificate.verdict));
+  report.set("certified_c1", certificate.verdict == TS::Certificate_verdict::proof);
   report.set("certificate_exact", certificate.exact);
   report.set("c1_within_tolerance", certificate.certified);
   report.set("c1_tolerance", certificate.tolerance);
@@ -412,8 +489,14 @@ Json run(const C1_job& job, std::ostream& out) {
         << "  free parameters: " << spline.number_of_free_parameters();
     if (morgan_scott)
       out << " (Morgan-Scott dimension " << *morgan_scott << ")";
-    if (rank_dimension)
-      out << " (exact rank dimension " << *rank_dimension << ")";
+    if (dimension_proven)
+      out << " (dimension " << dimension_bound->upper_bound
+          << " proven: the rank of the C^1 conditions mod " << dimension_bound->prime
+          << " bounds it from above)";
+    else if (dimension_bound)
+      out << " (dimension between " << spline.number_of_free_parameters() << " and "
+          << dimension_bound->upper_bound << ": rank of the C^1 conditions mod "
+          << dimension_bound->prime << ")";
     out << "\n  fit: " << job.fit << ", arithmetic: " << (job.exact ? "exact rationals" : "double")
         << ", largest interpolation error: " << interpolation_error << "\n";
     if (job.gradients)
@@ -433,18 +516,31 @@ Json run(const C1_job& job, std::ostream& out) {
         << sampled_min << ", " << sampled_max << "]\n"
         << "  " << certificate.summary();
     if (!certificate.exact)
-      out << "  (double build: use --exact for an exact proof of C^1)\n";
+      out << "  (double build: use --exact for an exact proof of C^1; 'tspline certify' checks "
+             "a saved file's values exactly and accepts their round-off with --tolerance "
+          << format_number(certificate.tolerance) << ")\n";
   }
-  if (overshoots)
-    std::cerr << "tspline c1: warning: the surface leaves the data range [" << data_min << ", "
-              << data_max << "] by " << overshoot << " (more than 10% of its span) at sampled "
-              << "points; for noisy data use --fit energy --smoothing 1, a lower --degree "
-                 "overshoots less\n";
+  for (const std::string& warning : warnings)
+    std::cerr << "tspline c1: warning: " << warning << "\n";
+  Json warning_list = Json::array();
+  for (const std::string& warning : warnings)
+    warning_list.push_back(warning);
+  report.set("warnings", warning_list);
   if (!job.report.empty()) {
     std::ofstream file = open_output(job.report);
     report.write(file);
     file << '\n';
   }
+  // The outputs are written (to look at), but a spline that fails its own check is an error.
+  if (!certificate.certified && certificate.exact)
+    throw std::runtime_error("the exact spline fails its C^1 certificate: this is a bug, please "
+                             "report it with the input");
+  if (!certificate.certified)
+    throw std::runtime_error("the spline is not C^1 within round-off (largest residual " +
+                             format_number(certificate.max_residual) + ", tolerance " +
+                             format_number(certificate.tolerance) +
+                             "): double arithmetic fails on this input" + scale_hint +
+                             "; --exact computes it exactly");
   return report;
 }
 
@@ -455,33 +551,38 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
   auto patch = [&file](std::uint32_t f) -> const TS::Bezier_triangle<K, Value>& {
     return file.patches[f];
   };
-  TS::C1_certificate c = TS::certify_C1(file.domain, patch);
-  if (tolerance >= 0) {
-    // Exact residuals, compared with the user's tolerance.
-    c.failed_edges = 0;
-    for (auto& e : c.edges) {
-      e.c1 = e.residual <= tolerance;
-      c.failed_edges += e.c1 ? 0 : 1;
-    }
-    c.certified = c.failed_edges == 0;
-    c.tolerance = tolerance;
-  }
+  const TS::C1_certificate c = TS::certify_C1(file.domain, patch, tolerance >= 0 ? tolerance : 0);
   out << "spline file " << path << ": " << file.domain.number_of_vertices() << " vertices, "
       << file.domain.number_of_faces() << " patches of degree "
       << (file.patches.empty() ? 0 : file.patches.front().degree()) << "\n"
       << c.summary();
-  if (tolerance >= 0)
-    out << "  (verdict with tolerance " << tolerance << " on exact residuals)\n";
+  // A spline saved by a double build carries round-off: say so rather than only "failed".
+  double scale = 0;
+  for (const auto& p : file.patches)
+    for (const Value& v : p.control_points())
+      scale = (std::max)(scale, TS::max_abs_coordinate(v));
+  std::string hint;
+  // Round-off of a double build: residuals between 1e-20 and 1e-10 of the largest value.
+  const double relative_log10 = c.max_residual_log10 - std::log10((std::max)(scale, 1.0));
+  if (!c.certified && relative_log10 >= -20 && relative_log10 <= -10)
+    hint = "the residuals (largest " + format_number(c.max_residual) +
+           ") are round-off of a double build: --tolerance " +
+           format_number(1e-10 * (std::max)(scale, 1.0)) +
+           " accepts them (not a proof); build with --exact for a proof";
   Json report = Json::object();
   report.set("file", path);
   report.set("vertices", file.domain.number_of_vertices());
   report.set("faces", file.domain.number_of_faces());
-  report.set("certified_c1", c.certified);
+  report.set("verdict", TS::verdict_name(c.verdict));
+  report.set("certified_c1", c.verdict == TS::Certificate_verdict::proof);
+  report.set("within_tolerance", c.certified);
   report.set("exact", true);
   report.set("tolerance", tolerance >= 0 ? Json(tolerance) : Json());
   report.set("max_c1_residual", c.max_residual);
+  report.set("max_c1_residual_log10", log10_json(c.max_residual_log10));
   report.set("interior_edges", c.interior_edges);
   report.set("failed_edges", c.failed_edges);
+  report.set("nonzero_edges", c.nonzero_edges);
   Json edges = Json::array();
   for (const auto& e : c.edges) {
     Json entry = Json::object();
@@ -492,11 +593,13 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
     entry.set("vertices", v);
     entry.set("c0", e.c0);
     entry.set("c1", e.c1);
+    entry.set("zero", e.zero);
     entry.set("residual", e.residual);
+    entry.set("residual_log10", log10_json(e.residual_log10));
     edges.push_back(entry);
   }
   report.set("edges", edges);
-  return {report, c.certified};
+  return {report, c.certified, hint};
 }
 
 } // namespace

@@ -39,7 +39,8 @@ Json run_c1_job(const C1_job& job, std::ostream& out);
 
 struct Certify_result {
   Json report;
-  bool certified = false;
+  bool certified = false;     // proof or within the tolerance
+  std::string round_off_hint; // set when a failure looks like the round-off of a double build
 };
 
 // Re-checks a saved spline exactly; prints a summary, returns the report. `tolerance` < 0:

@@ -984,6 +984,48 @@ TYPED_TEST(MeshDomain, RejectsImpossibleCountsBeforeAllocating) {
             1u);
 }
 
+// Issue 13, defect 5: overlaps between triangles that share no vertex (the local fan and
+// edge checks cannot see them) and T-junctions are rejected; disjoint triangles whose
+// bounding boxes meet are not.
+TYPED_TEST(MeshDomain, RejectsOverlapsAndTJunctionsAnywhere) {
+  using K = TypeParam;
+  using Point = typename K::Point_2;
+  using Index = typename TS::Planar_domain<K>::Index;
+  auto read = [](const std::string& name) {
+    const std::string path = std::string(TSPLINE_BAD_DATA_DIR) + "/" + name;
+    return [path] { TS::read_mesh_domain<K>(path); };
+  };
+  EXPECT_TRUE(
+      throws_with(read("crossing_triangles.off"),
+                  {"crossing_triangles.off", "triangles 1 (3, 4, 5) and 0 (0, 1, 2) overlap"}));
+  EXPECT_TRUE(throws_with(read("double_cover.off"), {"double_cover.off", "overlap"}));
+  EXPECT_TRUE(
+      throws_with(read("t_junction.off"),
+                  {"t_junction.off", "vertex 3 (1, 0) lies inside edge (0, 1)", "T-junction"}));
+
+  const std::vector<std::array<Index, 3>> two{{{0, 1, 2}}, {{3, 4, 5}}};
+  auto domain = [&](std::vector<Point> points, bool check) {
+    return TS::Planar_domain<K>(std::move(points), two, K(), check);
+  };
+  const std::vector<Point> crossing{Point(0, 0),   Point(2, 0),   Point(0, 2),
+                                    Point(1, 0.5), Point(3, 0.5), Point(1, 3)};
+  EXPECT_TRUE(throws_with([&] { domain(crossing, true); }, {"overlap"}));
+  // Without the global test the local checks accept it: the test is what catches it.
+  EXPECT_EQ(domain(crossing, false).number_of_faces(), 2u);
+  // Boxes meet, triangles do not (they are 0.8 apart along the diagonal): accepted.
+  const std::vector<Point> apart{Point(0, 0), Point(2, 0),   Point(0, 2),
+                                 Point(2, 2), Point(1.1, 2), Point(2, 1.1)};
+  EXPECT_EQ(domain(apart, true).number_of_components(), 2u);
+  // Edges on one line (collinear orientation tests), apart: accepted.
+  const std::vector<Point> on_one_line{Point(0, 0),    Point(2, 0), Point(1, 1),
+                                       Point(1.5, -1), Point(5, 0), Point(2.5, 0)};
+  EXPECT_EQ(domain(on_one_line, true).number_of_faces(), 2u);
+  // A triangle inside another (no boundary edge crosses): still an overlap.
+  const std::vector<Point> nested{Point(0, 0), Point(4, 0), Point(0, 4),
+                                  Point(1, 1), Point(2, 1), Point(1, 2)};
+  EXPECT_TRUE(throws_with([&] { domain(nested, true); }, {"overlap"}));
+}
+
 TYPED_TEST(MeshDomain, RejectsFractionalAndLongIndices) {
   using K = TypeParam;
   Temporary_directory dir;

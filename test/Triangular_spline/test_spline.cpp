@@ -15,6 +15,7 @@
 #include <CGAL/Triangular_spline/shape.h>
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <random>
 #include <set>
@@ -241,6 +242,110 @@ TEST(Spline, DoubleBuildHasRoundOffResidualsOnly) {
   }
 }
 
+TEST(Certificate, MagnitudesDoNotUnderflow) {
+  using FT = Exact_kernel::FT;
+  FT tiny(1), huge(1);
+  for (int i = 0; i < 500; ++i) {
+    tiny /= FT(10);
+    huge *= FT(10);
+  }
+  // to_double() says 0 and infinity; the magnitudes must not.
+  EXPECT_EQ(CGAL::to_double(tiny), 0.0);
+  EXPECT_NEAR(TS::log10_magnitude(tiny), -500.0, 1e-9);
+  EXPECT_NEAR(TS::log10_magnitude(FT(-FT(3) * huge)), 500.0 + std::log10(3.0), 1e-9);
+  EXPECT_NEAR(TS::log10_magnitude(FT(FT(3) / FT(7))), std::log10(3.0 / 7.0), 1e-15);
+  EXPECT_TRUE(std::isinf(TS::log10_magnitude(FT(0))));
+  EXPECT_LT(TS::log10_magnitude(FT(0)), 0.0);
+  EXPECT_NEAR(TS::log10_magnitude(1e-320), -320.0, 1e-3); // a double subnormal
+  EXPECT_NEAR(TS::max_abs_coordinate_log10(Exact_kernel::Vector_3(tiny, FT(-FT(2) * tiny), 0)),
+              std::log10(2.0) - 500, 1e-9);
+  // Tolerances compare exactly: 0.1 is not 1/10 in double.
+  const FT tenth = FT(1) / FT(10);
+  EXPECT_FALSE(TS::is_within_tolerance(tenth, std::nextafter(0.1, 0.0)));
+  EXPECT_TRUE(TS::is_within_tolerance(tenth, 0.1)); // double(0.1) > 1/10
+  EXPECT_TRUE(TS::is_within_tolerance(FT(-tiny), 1e-300));
+}
+
+TEST(Certificate, OnlyExactZerosMakeAProof) {
+  using K = Exact_kernel;
+  using FT = K::FT;
+  Random_rationals random(21);
+  const auto domains = all_domains<K>();
+  const Planar_domain<K>& domain = domains.front().second;
+  C1_quintic_spline<K> spline(domain);
+  randomize(spline, random);
+  std::vector<TS::Bezier_triangle<K>> patches;
+  for (Index f = 0; f < domain.number_of_faces(); ++f)
+    patches.push_back(spline.patch(f));
+  auto certify_patches = [&](double tolerance) {
+    return TS::certify_C1(
+        domain, [&](Index f) -> const TS::Bezier_triangle<K>& { return patches[f]; }, tolerance);
+  };
+  const TS::C1_certificate proof = certify_patches(0);
+  EXPECT_EQ(proof.verdict, TS::Certificate_verdict::proof);
+  EXPECT_EQ(proof.nonzero_edges, 0u);
+  EXPECT_TRUE(std::isinf(proof.max_residual_log10));
+  // A tolerance does not weaken a proof that needs none.
+  EXPECT_EQ(certify_patches(1e-3).verdict, TS::Certificate_verdict::proof);
+
+  // Raise the corner value of one face at one end of an interior edge by 10^-500.
+  Index edge = 0;
+  while (domain.is_boundary_edge(edge))
+    ++edge;
+  const Index f = domain.edge_faces(edge)[0];
+  TS::Multi_index corner{0, 0, 0};
+  for (int c = 0; c < 3; ++c)
+    if (patches[f].vertex(c) == domain.point(domain.edge(edge)[0]))
+      corner[c] = 5;
+  FT tiny(1);
+  for (int i = 0; i < 500; ++i)
+    tiny /= FT(10);
+  patches[f].set_control_point(corner, patches[f].control_point(corner) + tiny);
+
+  const TS::C1_certificate broken = certify_patches(0);
+  EXPECT_EQ(broken.verdict, TS::Certificate_verdict::failed);
+  EXPECT_FALSE(broken.certified);
+  EXPECT_GE(broken.failed_edges, 1u);
+  EXPECT_EQ(broken.max_residual, 0.0);                 // underflows in double...
+  EXPECT_NEAR(broken.max_residual_log10, -500.0, 1.0); // ...but not in the certificate
+  EXPECT_NE(broken.summary().find("e-50"), std::string::npos) << broken.summary();
+  EXPECT_NE(broken.json().find("\"verdict\": \"failed\""), std::string::npos);
+  // A tolerance accepts it, but never as a proof.
+  const TS::C1_certificate accepted = certify_patches(1e-300);
+  EXPECT_EQ(accepted.verdict, TS::Certificate_verdict::within_tolerance);
+  EXPECT_TRUE(accepted.certified);
+  EXPECT_EQ(accepted.nonzero_edges, broken.failed_edges);
+  EXPECT_NE(accepted.summary().find("NOT a proof"), std::string::npos);
+  EXPECT_NE(accepted.json().find("\"certified_c1\": false"), std::string::npos);
+
+  // Double arithmetic never proves, not even with every residual zero (the zero spline).
+  C1_quintic_spline<Epick> zero(all_domains<Epick>().front().second);
+  zero.propagate();
+  const TS::C1_certificate check =
+      TS::certify_C1(zero.domain(), [&](Index g) { return zero.patch(g); });
+  EXPECT_EQ(check.max_residual, 0.0);
+  EXPECT_EQ(check.verdict, TS::Certificate_verdict::within_tolerance);
+}
+
+// Issue 13, defect 9: the rational rank never finished on 100 scattered decimal points;
+// the modular bound does in milliseconds and meets the free count, which proves the
+// dimension. It is an upper bound: a C^1 condition it misses shows as a larger bound.
+TEST(Spline, ModularRankProvesTheDimensionOnScatteredPoints) {
+  const std::vector<Epick::Point_2> points = random_square_points(100, 5);
+  CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
+  std::vector<CGAL::Delaunay_triangulation_2<Epick>::Vertex_handle> handles;
+  const Planar_domain<Epick> domain = TS::domain_from_triangulation_2<Epick>(
+      dt, [](auto) { return true; }, handles);
+  const auto start = std::chrono::steady_clock::now();
+  const TS::Dimension_bound bound = TS::spline_dimension_upper_bound(domain);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  EXPECT_EQ(bound.upper_bound, C1_quintic_spline<Epick>(domain).number_of_free_parameters());
+  EXPECT_EQ(bound.prime, 2147483629u);
+  if (const auto ms = TS::morgan_scott_dimension(domain)) {
+    EXPECT_EQ(static_cast<long long>(bound.upper_bound), *ms);
+  }
+}
+
 TEST(Spline, FreeCountEqualsExactRankAndMorganScott) {
   using K = Exact_kernel;
   for (const auto& [name, domain] : all_domains<K>()) {
@@ -248,6 +353,8 @@ TEST(Spline, FreeCountEqualsExactRankAndMorganScott) {
     const std::size_t free = spline.number_of_free_parameters();
     EXPECT_EQ(free, TS::free_parameter_count(domain)) << name;
     EXPECT_EQ(free, TS::exact_spline_dimension(domain)) << name;
+    // The modular rank agrees with the rational one (and so proves the dimension).
+    EXPECT_EQ(free, TS::spline_dimension_upper_bound(domain).upper_bound) << name;
     const auto ms = TS::morgan_scott_dimension(domain);
     if (name == "L with hole") {
       EXPECT_FALSE(ms.has_value());

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -808,11 +809,16 @@ struct Edge_continuity {
   (the generalisation of `C1_certificate` to any order).
 */
 struct Ck_certificate {
-  int order = 0;           ///< the order \f$k\f$ checked
-  bool exact = false;      ///< decided with exact arithmetic (then `certified` is a proof)
-  bool certified = false;  ///< every interior edge meets \f$C^k\f$
-  double tolerance = 0;    ///< absolute residual tolerance used (0 for exact)
+  int order = 0;      ///< the order \f$k\f$ checked
+  bool exact = false; ///< decided with exact arithmetic
+  /// what was established (a proof only with exact arithmetic and every condition zero)
+  Certificate_verdict verdict = Certificate_verdict::failed;
+  bool certified = false;  ///< every interior edge meets \f$C^k\f$ up to the tolerance
+  double tolerance = 0;    ///< absolute residual tolerance used (0: only exact zeros)
   double max_residual = 0; ///< largest residual over all edges
+  /// \f$\log_{10}\f$ of the largest residual, exact in magnitude (\f$-\infty\f$: all zero)
+  double max_residual_log10 = -std::numeric_limits<double>::infinity();
+  std::size_t nonzero_edges = 0; ///< edges with a nonzero residual
   /// the lowest order met by an edge (\f$k\f$ when certified, -1 if some edge is not even
   /// \f$C^0\f$); \f$k\f$ for a domain without interior edges
   int lowest_order = 0;
@@ -827,13 +833,14 @@ struct Ck_certificate {
   \brief certifies that the patches over `domain` join with \f$C^k\f$ continuity across
   every interior edge (`check_join()` with `Join_conditions::Extension` on each edge).
 
-  With an exact number type the verdict is a proof; with `double` a condition holds when
-  its residual is at most `tolerance` (absolute, as for `certify_C1()`).
+  A condition holds when it is zero or its residual is at most `tolerance` (absolute,
+  compared exactly, as for `certify_C1()`); `verdict` is a proof only with an exact number
+  type and every condition zero.
 
   \param domain the domain triangulation
   \param patch a callable `patch(f)` returning the `Bezier_triangle` of face `f`
   \param k the order, \f$0 \le k \le n\f$
-  \param tolerance for inexact number types: residual accepted as zero
+  \param tolerance largest absolute residual accepted (0: only exact zeros)
 */
 template <class GeomTraits, class PatchSource>
 Ck_certificate certify_Ck(const Planar_domain<GeomTraits>& domain, const PatchSource& patch, int k,
@@ -843,7 +850,7 @@ Ck_certificate certify_Ck(const Planar_domain<GeomTraits>& domain, const PatchSo
   Ck_certificate certificate;
   certificate.order = k;
   certificate.exact = CGAL::Algebraic_structure_traits<typename GeomTraits::FT>::Is_exact::value;
-  certificate.tolerance = certificate.exact ? 0 : tolerance;
+  certificate.tolerance = tolerance > 0 ? tolerance : 0;
   certificate.lowest_order = k;
   for (Index e = 0; e < domain.number_of_edges(); ++e) {
     if (domain.is_boundary_edge(e))
@@ -857,13 +864,20 @@ Ck_certificate certify_Ck(const Planar_domain<GeomTraits>& domain, const PatchSo
     c.achieved_order = report.achieved_order;
     c.residual = report.max_residual;
     certificate.max_residual = (std::max)(certificate.max_residual, c.residual);
+    if (!(report.max_residual_log10 <= certificate.max_residual_log10))
+      certificate.max_residual_log10 = report.max_residual_log10;
     certificate.lowest_order = (std::min)(certificate.lowest_order, c.achieved_order);
     if (!report.holds)
       ++certificate.failed_edges;
+    if (!std::all_of(report.conditions.begin(), report.conditions.end(),
+                     [](const Join_condition& j) { return j.zero; }))
+      ++certificate.nonzero_edges;
     certificate.edges.push_back(c);
   }
   certificate.interior_edges = certificate.edges.size();
   certificate.certified = certificate.failed_edges == 0;
+  certificate.verdict =
+      certificate_verdict(certificate.exact, certificate.failed_edges, certificate.nonzero_edges);
   certificate.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return certificate;

@@ -7,7 +7,9 @@
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
+#include <CGAL/Bbox_2.h>
 #include <CGAL/Cartesian_converter.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -40,8 +42,12 @@ namespace Triangular_spline {
   - every vertex is manifold: its triangles form one fan, which turns once around an
     interior vertex and less than once around a boundary vertex.
 
-  Overlaps between parts of the domain that share no vertex (a triangulation that spirals
-  over itself) are not detected.
+  - no two triangles overlap, and no vertex lies inside an edge it does not end (a
+    T-junction): triangles sharing no vertex are compared pairwise where their bounding
+    boxes meet (`CGAL::box_self_intersection_d()`, exact orientation tests), which catches
+    separate parts that cross and triangulations that spiral over themselves. Callers
+    holding a triangulation known to be embedded (a CGAL triangulation's faces) may skip
+    this test, the only one that is not linear in the size.
 
   The adjacency is stored in flat arrays (no per-element allocation), so domains of
   \f$10^6\f$ triangles are cheap. Every CGAL triangulation or face graph can be turned into
@@ -65,13 +71,17 @@ public:
 
   /// creates the domain from points and triangles (vertex indices, any orientation: each
   /// triangle is reoriented counter-clockwise).
+  /// \param check_overlaps `false` skips the global overlap test (for triangulations known to
+  /// be embedded, such as the faces of a CGAL triangulation)
   /// \throws Invalid_input if the triangulation violates one of the rules above
   Planar_domain(std::vector<Point_2> points, std::vector<std::array<Index, 3>> triangles,
-                const Geom_traits& traits = Geom_traits())
+                const Geom_traits& traits = Geom_traits(), bool check_overlaps = true)
       : m_points(std::move(points)), m_faces(std::move(triangles)), m_traits(traits) {
     validate_and_orient();
     build_edges();
     build_stars();
+    if (check_overlaps)
+      check_no_overlap();
   }
 
   /// \name Sizes
@@ -421,6 +431,91 @@ private:
     }
   }
 
+  // Triangles sharing a vertex are disjoint once every fan turns at most once (checked in
+  // build_stars()), so the domain is immersed and the number of triangles over a point only
+  // changes across boundary edges: where two triangles overlap (or a vertex touches an
+  // edge), a triangle with a boundary edge overlaps (or touches) another one. Only those
+  // are compared with all triangles, where their bounding boxes meet.
+  void check_no_overlap() const {
+    if (m_boundary_edges == 0)
+      return;
+    using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, Index>;
+    auto box = [this](std::size_t f) {
+      const auto& t = m_faces[f];
+      return Box(m_points[t[0]].bbox() + m_points[t[1]].bbox() + m_points[t[2]].bbox(),
+                 static_cast<Index>(f));
+    };
+    std::vector<Box> all, boundary;
+    all.reserve(m_faces.size());
+    for (std::size_t f = 0; f < m_faces.size(); ++f) {
+      all.push_back(box(f));
+      for (Index e : m_face_edges[f])
+        if (is_boundary_edge(e)) {
+          boundary.push_back(all.back());
+          break;
+        }
+    }
+    CGAL::box_intersection_d(boundary.begin(), boundary.end(), all.begin(), all.end(),
+                             [this](const Box& a, const Box& b) {
+                               if (a.info() != b.info())
+                                 check_pair(a.info(), b.info());
+                             });
+  }
+
+  void check_pair(Index f, Index g) const {
+    const auto& F = m_faces[f];
+    const auto& G = m_faces[g];
+    for (Index a : F)
+      for (Index b : G)
+        if (a == b)
+          return;
+    auto orientation = m_traits.orientation_2_object();
+    // side[i][k]: where vertex k of `B` lies relative to edge (i, i+1) of `A` (counter-
+    // clockwise, so the interior of A is on the left).
+    auto sides = [&](const std::array<Index, 3>& A, const std::array<Index, 3>& B) {
+      std::array<std::array<CGAL::Orientation, 3>, 3> side;
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t k = 0; k < 3; ++k)
+          side[i][k] = orientation(m_points[A[i]], m_points[A[(i + 1) % 3]], m_points[B[k]]);
+      return side;
+    };
+    // Interiors are disjoint iff some edge line of either triangle leaves the other one in
+    // its closed outer half-plane (separating axes of two convex polygons).
+    auto separated = [](const std::array<std::array<CGAL::Orientation, 3>, 3>& side) {
+      for (std::size_t i = 0; i < 3; ++i)
+        if (side[i][0] != CGAL::LEFT_TURN && side[i][1] != CGAL::LEFT_TURN &&
+            side[i][2] != CGAL::LEFT_TURN)
+          return true;
+      return false;
+    };
+    const auto fg = sides(F, G), gf = sides(G, F);
+    if (!separated(fg) && !separated(gf))
+      throw Invalid_input("domain: triangles " + face_name(f) + " and " + face_name(g) +
+                          " overlap (they share no vertex: the triangulation covers part of the "
+                          "plane twice)");
+    auto ordered = m_traits.collinear_are_strictly_ordered_along_line_2_object();
+    auto t_junction = [&](const std::array<Index, 3>& A, const std::array<Index, 3>& B,
+                          const std::array<std::array<CGAL::Orientation, 3>, 3>& side, Index a) {
+      for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t k = 0; k < 3; ++k)
+          if (side[i][k] == CGAL::COLLINEAR &&
+              ordered(m_points[A[i]], m_points[B[k]], m_points[A[(i + 1) % 3]]))
+            throw Invalid_input("domain: " + vertex_name(B[k]) + " lies inside edge (" +
+                                std::to_string(A[i]) + ", " + std::to_string(A[(i + 1) % 3]) +
+                                ") of triangle " + face_name(a) +
+                                " without ending it (a T-junction: the triangles do not meet "
+                                "edge to edge)");
+    };
+    t_junction(F, G, fg, f);
+    t_junction(G, F, gf, g);
+  }
+
+  std::string face_name(Index f) const {
+    const auto& t = m_faces[f];
+    return std::to_string(f) + " (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
+           std::to_string(t[2]) + ")";
+  }
+
   std::vector<Point_2> m_points;
   std::vector<std::array<Index, 3>> m_faces;
   Geom_traits m_traits;
@@ -484,7 +579,8 @@ Planar_domain<GeomTraits> domain_from_triangulation_2(const Triangulation& trian
     }
     triangles.push_back(t);
   }
-  return Planar_domain<GeomTraits>(std::move(points), std::move(triangles));
+  // A triangulation's faces are embedded: no overlap test needed.
+  return Planar_domain<GeomTraits>(std::move(points), std::move(triangles), GeomTraits(), false);
 }
 
 } // namespace Triangular_spline

@@ -4,12 +4,15 @@
 #ifndef CGAL_TRIANGULAR_SPLINE_VALUE_TRAITS_H
 #define CGAL_TRIANGULAR_SPLINE_VALUE_TRAITS_H
 
+#include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/Fraction_traits.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Origin.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace CGAL {
@@ -104,6 +107,87 @@ bool is_zero_value(const Value& v) {
   for (int c = 0; c < Traits::dimension; ++c)
     if (!CGAL::is_zero(Traits::coordinate(v, c)))
       return false;
+  return true;
+}
+
+namespace internal {
+
+// log10 |z| of an integer of any size: to_double() overflows beyond 1e308, so huge integers
+// are divided by 2^960 first (each division is exact enough for a magnitude).
+template <class Integer>
+double log10_of_integer(Integer z) {
+  if (CGAL::is_negative(z))
+    z = -z;
+  const Integer step(std::ldexp(1.0, 960));
+  double exponent = 0;
+  while (!(CGAL::to_double(z) <= 1e300)) {
+    z = z / step;
+    exponent += 960;
+  }
+  return std::log10(CGAL::to_double(z)) + exponent * std::log10(2.0);
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief returns \f$\log_{10} |x|\f$ without underflow or overflow: \f$-\infty\f$ iff `x` is
+  zero.
+
+  `CGAL::to_double()` turns an exact rational below \f$10^{-308}\f$ into 0 and one above
+  \f$10^{308}\f$ into infinity; for exact fraction types (`Gmpq`, `mpq_class`, ...) the
+  magnitude is taken from the numerator and the denominator instead, so a residual of
+  \f$10^{-500}\f$ reads \f$-500\f$, not \f$-\infty\f$. Accurate to about 15 digits.
+*/
+template <class FT>
+double log10_magnitude(const FT& x) {
+  if (CGAL::is_zero(x))
+    return -std::numeric_limits<double>::infinity();
+  const double d = std::abs(CGAL::to_double(x));
+  using Fractions = CGAL::Fraction_traits<FT>;
+  if constexpr (std::is_same<typename Fractions::Is_fraction, CGAL::Tag_true>::value) {
+    if (!(d >= 1e-300 && d <= 1e300)) {
+      typename Fractions::Numerator_type numerator;
+      typename Fractions::Denominator_type denominator;
+      typename Fractions::Decompose()(x, numerator, denominator);
+      return internal::log10_of_integer(numerator) - internal::log10_of_integer(denominator);
+    }
+  }
+  return std::log10(d);
+}
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief returns \f$\log_{10}\f$ of the largest absolute coordinate of `v`, without underflow
+  (`log10_magnitude()`): \f$-\infty\f$ iff `v` is zero.
+*/
+template <class Value>
+double max_abs_coordinate_log10(const Value& v) {
+  using Traits = Value_traits<Value>;
+  double result = -std::numeric_limits<double>::infinity();
+  for (int c = 0; c < Traits::dimension; ++c) {
+    const double x = log10_magnitude(Traits::coordinate(v, c));
+    if (!(x <= result))
+      result = x;
+  }
+  return result;
+}
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \brief returns `true` iff every coordinate of `v` is at most `tolerance` in absolute value,
+  compared exactly in the number type (the `double` tolerance converts exactly).
+*/
+template <class Value>
+bool is_within_tolerance(const Value& v, double tolerance) {
+  using Traits = Value_traits<Value>;
+  using FT = typename Traits::FT;
+  const FT bound(tolerance);
+  for (int c = 0; c < Traits::dimension; ++c) {
+    const FT x = Traits::coordinate(v, c);
+    if (!(CGAL::abs(x) <= bound))
+      return false;
+  }
   return true;
 }
 

@@ -12,6 +12,8 @@
 #include <CGAL/enum.h>
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -44,16 +46,53 @@ enum class Join_conditions {
 
 /*!
   \ingroup PkgTriangularSplineContinuity
+  \brief what a certificate establishes.
+*/
+enum class Certificate_verdict {
+  /// every condition holds exactly, decided in an exact number type: a proof
+  proof,
+  /// every condition holds up to the tolerance (or `double` arithmetic was used): not a proof
+  within_tolerance,
+  /// some condition fails, even with the tolerance
+  failed
+};
+
+/// returns `"proof"`, `"within_tolerance"` or `"failed"`
+inline const char* verdict_name(Certificate_verdict verdict) {
+  switch (verdict) {
+  case Certificate_verdict::proof:
+    return "proof";
+  case Certificate_verdict::within_tolerance:
+    return "within_tolerance";
+  default:
+    return "failed";
+  }
+}
+
+/// the verdict of a check in which `failed` conditions failed and `nonzero` were not exactly
+/// zero; only an exact number type with every condition zero makes a proof
+inline Certificate_verdict certificate_verdict(bool exact, std::size_t failed,
+                                               std::size_t nonzero) {
+  if (failed > 0)
+    return Certificate_verdict::failed;
+  return exact && nonzero == 0 ? Certificate_verdict::proof : Certificate_verdict::within_tolerance;
+}
+
+/*!
+  \ingroup PkgTriangularSplineContinuity
   \brief one compared pair of blossom values \f$f_B(p^g q^h r^i s^j) - f_A(p^g q^h r^i s^j)\f$.
 */
 struct Join_condition {
-  int order = 0;          ///< \f$g+h\f$: the number of arguments off the shared edge
-  int p_count = 0;        ///< \f$g\f$, copies of A's apex \f$p\f$
-  int q_count = 0;        ///< \f$h\f$, copies of B's apex \f$q\f$
-  int r_count = 0;        ///< \f$i\f$, copies of the first shared vertex \f$r\f$
-  int s_count = 0;        ///< \f$j\f$, copies of the second shared vertex \f$s\f$
-  double residual = 0;    ///< largest absolute coordinate of the difference (in `double`)
-  bool satisfied = false; ///< the difference is zero (exactly, or within the tolerance)
+  int order = 0;       ///< \f$g+h\f$: the number of arguments off the shared edge
+  int p_count = 0;     ///< \f$g\f$, copies of A's apex \f$p\f$
+  int q_count = 0;     ///< \f$h\f$, copies of B's apex \f$q\f$
+  int r_count = 0;     ///< \f$i\f$, copies of the first shared vertex \f$r\f$
+  int s_count = 0;     ///< \f$j\f$, copies of the second shared vertex \f$s\f$
+  double residual = 0; ///< largest absolute coordinate of the difference (in `double`)
+  /// the difference is zero in the number type: a proof with an exact number type, only a
+  /// cancellation of rounded values with `double`
+  bool zero = false;
+  bool satisfied = false; ///< `zero`, or every coordinate within the tolerance
 };
 
 /*!
@@ -67,7 +106,10 @@ struct Join_report {
   int achieved_order = -1;
   bool holds = false;      ///< `achieved_order >= requested_order`
   double max_residual = 0; ///< largest residual over all conditions checked
-  bool exact = false;      ///< the verdict was decided with an exact number type
+  /// \f$\log_{10}\f$ of the largest residual, from the exact differences where `double`
+  /// under- or overflows (`log10_magnitude()`): \f$-\infty\f$ iff every difference is zero
+  double max_residual_log10 = -std::numeric_limits<double>::infinity();
+  bool exact = false; ///< the verdict was decided with an exact number type
   /// local indices (0, 1, 2) in patch A of \f$p, r, s\f$ and in patch B of \f$q, r, s\f$
   std::array<int, 3> a_vertices{{0, 1, 2}}, b_vertices{{0, 1, 2}};
   std::vector<Join_condition> conditions; ///< every condition checked, by increasing order
@@ -105,6 +147,37 @@ shared_edge(const Bezier_triangle<GeomTraits, Value>& A,
   return {{{p, common[0].first, common[1].first}}, {{q, common[0].second, common[1].second}}};
 }
 
+// Fills the residual and the verdict of one condition from its difference. The tolerance is
+// compared exactly in the number type, and log10 of a residual outside double's normal
+// range is taken from the exact difference (folded into the report's max_residual_log10).
+template <class Value>
+void record_difference(Join_condition& c, const Value& difference, double tolerance,
+                       Join_report& report) {
+  c.residual = max_abs_coordinate(difference);
+  c.zero = is_zero_value(difference);
+  c.satisfied = c.zero || (tolerance > 0 && is_within_tolerance(difference, tolerance));
+  if (!c.zero && !(c.residual >= 1e-300 && c.residual <= 1e300)) {
+    const double magnitude = max_abs_coordinate_log10(difference);
+    if (!(magnitude <= report.max_residual_log10))
+      report.max_residual_log10 = magnitude;
+  }
+}
+
+// The largest residual and the achieved order, once every condition is recorded.
+inline void summarize_conditions(Join_report& report) {
+  double normal_max = 0;
+  for (const Join_condition& c : report.conditions) {
+    if (!(c.residual <= report.max_residual))
+      report.max_residual = c.residual;
+    if (!c.zero && c.residual >= 1e-300 && c.residual <= 1e300 && c.residual > normal_max)
+      normal_max = c.residual;
+    if (!c.satisfied && c.order - 1 < report.achieved_order)
+      report.achieved_order = c.order - 1;
+  }
+  if (normal_max > 0 && !(std::log10(normal_max) <= report.max_residual_log10))
+    report.max_residual_log10 = std::log10(normal_max);
+}
+
 } // namespace internal
 
 /*!
@@ -114,16 +187,18 @@ shared_edge(const Bezier_triangle<GeomTraits, Value>& A,
 
   The shared edge is found by exact comparison of the domain vertices, and the two apexes
   must lie strictly on opposite sides of it (exact orientation test). Each condition
-  compares the blossoms of both patches at the same multiset of points, so with an exact
-  number type the verdict is exact; with `double`, a condition counts as satisfied when its
-  residual is at most `tolerance` (absolute, largest coordinate), and the residuals say by
-  how much the join misses.
+  compares the blossoms of both patches at the same multiset of points. A condition is
+  satisfied when its difference is zero or, for `tolerance > 0`, when every coordinate of
+  the difference is at most `tolerance` in absolute value (compared exactly in the number
+  type). With an exact number type and `tolerance = 0` the verdict is therefore a proof;
+  `Join_condition::zero` tells a proven condition from one accepted by the tolerance.
 
   \param A the first patch
   \param B the second patch, of the same degree \f$m\f$ as `A`
   \param k the continuity order, \f$0 \le k \le m\f$
   \param conditions which equivalent set of conditions to evaluate
-  \param tolerance absolute tolerance for inexact number types; ignored (0) for exact ones
+  \param tolerance absolute tolerance on each coordinate of a difference (0: only zero
+  differences satisfy a condition)
   \throws Invalid_input if the degrees differ, `k` is out of range, or the triangles are
   not adjacent across one edge.
 */
@@ -141,9 +216,6 @@ check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<Ge
     throw Invalid_input("join test: continuity order " + std::to_string(k) + " outside 0.." +
                         std::to_string(m));
   constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
-  if (exact)
-    tolerance = 0;
-
   Join_report report;
   report.requested_order = k;
   report.exact = exact;
@@ -173,8 +245,7 @@ check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<Ge
         args_b.push_back(wb[point]);
       }
     const Value difference = B.blossom_barycentric(args_b) - A.blossom_barycentric(args_a);
-    c.residual = max_abs_coordinate(difference);
-    c.satisfied = exact ? is_zero_value(difference) : (c.residual <= tolerance);
+    internal::record_difference(c, difference, tolerance, report);
     return c;
   };
 
@@ -196,12 +267,7 @@ check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<Ge
   }
 
   report.achieved_order = k;
-  for (const Join_condition& c : report.conditions) {
-    if (!(c.residual <= report.max_residual))
-      report.max_residual = c.residual;
-    if (!c.satisfied && c.order - 1 < report.achieved_order)
-      report.achieved_order = c.order - 1;
-  }
+  internal::summarize_conditions(report);
   report.holds = report.achieved_order >= k;
   return report;
 }
@@ -228,8 +294,6 @@ Join_report check_C1_join(const Bezier_triangle<GeomTraits, Value>& A,
   if (m < 1)
     throw Invalid_input("join test: C^1 needs degree at least 1");
   constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
-  if (exact)
-    tolerance = 0;
   Join_report report;
   report.requested_order = 1;
   report.exact = exact;
@@ -255,8 +319,7 @@ Join_report check_C1_join(const Bezier_triangle<GeomTraits, Value>& A,
     c.q_count = order;
     c.r_count = i;
     c.s_count = m - order - i;
-    c.residual = max_abs_coordinate(difference);
-    c.satisfied = exact ? is_zero_value(difference) : (c.residual <= tolerance);
+    internal::record_difference(c, difference, tolerance, report);
     report.conditions.push_back(c);
   };
   for (int i = 0; i <= m; ++i) {
@@ -270,12 +333,7 @@ Join_report check_C1_join(const Bezier_triangle<GeomTraits, Value>& A,
     record(1, i, difference);
   }
   report.achieved_order = 1;
-  for (const Join_condition& c : report.conditions) {
-    if (!(c.residual <= report.max_residual))
-      report.max_residual = c.residual;
-    if (!c.satisfied && c.order - 1 < report.achieved_order)
-      report.achieved_order = c.order - 1;
-  }
+  internal::summarize_conditions(report);
   report.holds = report.achieved_order >= 1;
   return report;
 }

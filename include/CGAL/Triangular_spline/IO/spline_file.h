@@ -45,6 +45,9 @@ struct Spline_file {
   /// `patches[f]` is the patch of face `f`, over the face's vertices in the file's order
   /// (which may differ from `domain.face(f)` by the reorientation)
   std::vector<Bezier_triangle<GeomTraits, Value>> patches;
+  /// the file declares `number_type exact` (else `double`: the values of a double build,
+  /// whose continuity holds up to round-off only)
+  bool exact_values = true;
 };
 
 namespace internal {
@@ -413,7 +416,7 @@ Spline_file<GeomTraits, Value> read_spline_file(std::istream& input, const std::
       patches.emplace_back(m, domain.point(t[0]), domain.point(t[1]), domain.point(t[2]),
                            std::move(nets[f]));
     }
-    return Spline_file<GeomTraits, Value>{std::move(domain), std::move(patches)};
+    return Spline_file<GeomTraits, Value>{std::move(domain), std::move(patches), exact_file};
   } catch (const Invalid_input& e) {
     throw Invalid_input(source + ": " + e.what());
   }
