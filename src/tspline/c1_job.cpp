@@ -417,6 +417,7 @@ Json run(const C1_job& job, std::ostream& out) {
     moved.push_back(entry);
   }
   report.set("perturbed_vertices", moved);
+  report.set("degenerate_frames_rerouted", spline.degenerate_frames().size());
   // certified_c1 is a proof: exact builds only. Double builds report the tolerance check,
   // and the tolerance that `tspline certify --tolerance` needs for the saved file.
   report.set("verdict", TS::verdict_name(certificate.verdict));
@@ -481,7 +482,12 @@ Json run(const C1_job& job, std::ostream& out) {
         << (job.fix == "perturb" ? original_frames.frames.size()
                                  : spline.degenerate_frames().size())
         << (job.fix == "perturb"
-                ? " (fixed by moving " + std::to_string(moves.size()) + " vertices)"
+                ? " (fixed by moving " + std::to_string(moves.size()) + " vertices" +
+                      (spline.degenerate_frames().empty()
+                           ? std::string(")")
+                           : "; " + std::to_string(spline.degenerate_frames().size()) +
+                                 " at boundary vertices that cannot move without changing the "
+                                 "domain re-routed)")
                 : std::string(" (re-routed)"))
         << ", singular vertices: " << spline.singular_vertices().size()
         << ", thin frames re-routed: " << thin_frames << "\n"

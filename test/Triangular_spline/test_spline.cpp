@@ -210,17 +210,33 @@ TEST(Spline, ExactCertificationOnEveryDomainWithBothFixes) {
       randomize(parametric, random);
       EXPECT_TRUE(certify(parametric).certified) << name << " (parametric)";
     }
-    // Fix 2: perturbation, then the generic scheme (no degenerate frame left).
+    // Fix 2: perturbation, then the generic scheme. The domain's region is kept: boundary
+    // vertices slide along straight boundaries only, corners stay (their frames re-routed).
     std::vector<TS::Vertex_move<K::Point_2, Index>> moves;
     const Planar_domain<K> moved = TS::perturb_degenerate_vertices(domain, moves);
-    EXPECT_TRUE(TS::find_degenerate_frames(moved).frames.empty()) << name;
-    EXPECT_EQ(moves.empty(), TS::find_degenerate_frames(domain).frames.empty()) << name;
+    for (const auto& frame : TS::find_degenerate_frames(moved).frames)
+      EXPECT_TRUE(moved.is_boundary_vertex(frame.vertex)) << name << ": interior frame left";
     for (const auto& move : moves) {
       EXPECT_GT(move.distance, 0.0);
       EXPECT_LT(move.distance, 0.2) << "a perturbation must be small";
+      if (domain.is_boundary_vertex(move.vertex)) {
+        const auto [nb, ne] = domain.neighbours(move.vertex);
+        EXPECT_TRUE(CGAL::collinear(domain.point(nb[0]), move.from, domain.point(*(ne - 1))));
+        EXPECT_TRUE(CGAL::collinear(domain.point(nb[0]), move.to, domain.point(*(ne - 1))))
+            << name << ": a boundary vertex left its boundary line";
+      }
     }
+    K::FT area_before(0), area_after(0);
+    for (Index f = 0; f < domain.number_of_faces(); ++f) {
+      const auto& t = domain.face(f);
+      area_before += CGAL::area(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+      area_after += CGAL::area(moved.point(t[0]), moved.point(t[1]), moved.point(t[2]));
+    }
+    EXPECT_EQ(area_before, area_after) << name << ": the region changed";
     C1_quintic_spline<K> spline(moved);
-    EXPECT_TRUE(spline.degenerate_frames().empty());
+    EXPECT_EQ(spline.degenerate_frames().size(), TS::find_degenerate_frames(moved).frames.size());
+    // Moves leave frames well conditioned (the smallest moves left weights of 1e6).
+    EXPECT_LE(spline.max_propagation_weight(), 64.0) << name;
     randomize(spline, random);
     EXPECT_TRUE(certify(spline).certified) << name << " (perturbed)";
   }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -75,6 +76,23 @@ bool numerically_collinear(const Point_2& p, const Point_2& r, const Point_2& q)
   // Opposite directions only: apexes on the two sides with r between them.
   // hypot, not a product of squares: coordinates up to 1e150 must not overflow to inf.
   return dot < 0 && std::abs(cross) <= 1e-12 * std::hypot(ax, ay) * std::hypot(bx, by);
+}
+
+// The largest weight of the regular propagation at end r of edge (r, other) with apexes p
+// and q: the largest barycentric coordinate of `other` in (p, r, q), in double.
+template <class Point_2>
+double frame_weight(const Point_2& other, const Point_2& p, const Point_2& r, const Point_2& q) {
+  auto orient = [](const Point_2& a, const Point_2& b, const Point_2& c) {
+    return (CGAL::to_double(b.x()) - CGAL::to_double(a.x())) *
+               (CGAL::to_double(c.y()) - CGAL::to_double(a.y())) -
+           (CGAL::to_double(b.y()) - CGAL::to_double(a.y())) *
+               (CGAL::to_double(c.x()) - CGAL::to_double(a.x()));
+  };
+  const double d = orient(p, r, q);
+  if (d == 0)
+    return std::numeric_limits<double>::infinity();
+  return (std::max)({std::abs(orient(other, r, q) / d), std::abs(orient(p, other, q) / d),
+                     std::abs(orient(p, r, other) / d)});
 }
 
 } // namespace internal
@@ -142,13 +160,20 @@ struct Vertex_move {
   just enough that no frame is degenerate, and reports the moves (Xu §4.4.4, second fix).
 
   Each offending vertex is tried at distances \f$2^{-k} \ell\f$ (\f$\ell\f$ its shortest
-  incident edge, \f$k = 20, 19, \dots, 3\f$, smallest first) in eight directions; the first
-  position is kept for which every incident triangle keeps its orientation and no edge end
-  whose frame involves the vertex is degenerate, all decided with exact orientation tests.
-  The scan is repeated until no degenerate frame is left. Moving a boundary vertex bends the
-  boundary by that amount; vertex indices are unchanged, so data attached to vertices
-  stays valid.
-  \throws Invalid_input if no admissible move is found (not observed in practice).
+  incident edge, \f$k = 20, 19, \dots, 3\f$, smallest first) in eight directions. A position
+  is admissible when every incident triangle keeps its orientation and no edge end whose
+  frame involves the vertex is degenerate, all decided with exact orientation tests; the
+  first admissible position whose frames propagate with weights at most 16 (the bound of
+  `C1_quintic_spline`) is kept, else the first admissible one: a tiny move off a collinear
+  frame leaves it nearly degenerate, with weights in the millions.
+  The scan is repeated until no degenerate frame is left.
+
+  The domain's region is kept: a boundary vertex between two collinear boundary edges moves
+  only along their line (candidates off the line by rounding are rejected, exactly), and a
+  boundary corner does not move at all. Frames that no admissible move removes stay
+  degenerate: `C1_quintic_spline` re-routes them (`find_degenerate_frames()` lists them).
+  Vertex indices are unchanged, so data attached to vertices stays valid.
+  \throws Invalid_input if an interior vertex has no admissible move (not observed).
 */
 template <class GeomTraits>
 Planar_domain<GeomTraits> perturb_degenerate_vertices(
@@ -160,14 +185,18 @@ Planar_domain<GeomTraits> perturb_degenerate_vertices(
   using FT = typename GeomTraits::FT;
   constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
   moves.clear();
+  // C1_quintic_spline's bound: frames above it would be re-routed as thin ones.
+  constexpr double weight_bound = 16;
   Planar_domain<GeomTraits> current = domain;
+  std::set<Index> stuck; // boundary vertices that cannot move without changing the domain
   for (int round = 0; round < 8; ++round) {
     const auto analysis = find_degenerate_frames(current);
-    if (analysis.frames.empty())
-      return current;
     std::set<Index> offenders;
     for (const auto& f : analysis.frames)
-      offenders.insert(f.vertex);
+      if (!stuck.count(f.vertex))
+        offenders.insert(f.vertex);
+    if (offenders.empty())
+      return current;
     std::vector<Point_2> points = current.points();
     auto orientation = current.geom_traits().orientation_2_object();
     auto collinear = current.geom_traits().collinear_2_object();
@@ -197,9 +226,40 @@ Planar_domain<GeomTraits> perturb_degenerate_vertices(
         }
       return true;
     };
+    // The largest regular propagation weight of the frames around v with v at `p`: moves
+    // that leave every one below `weight_bound` are preferred (a tiny move off a collinear
+    // frame leaves it nearly degenerate, with weights in the millions).
+    auto largest_weight = [&](Index v, const Point_2& p) {
+      auto at = [&](Index w) -> const Point_2& { return w == v ? p : points[w]; };
+      double largest = 0;
+      const auto [fb, fe] = current.star_faces(v);
+      for (auto f = fb; f != fe; ++f)
+        for (int i = 0; i < 3; ++i) {
+          const Index e = current.face_edge(*f, i);
+          if (current.is_boundary_edge(e))
+            continue;
+          const auto& ef = current.edge_faces(e);
+          const Index left = current.opposite_vertex(ef[0], e);
+          const Index right = current.opposite_vertex(ef[1], e);
+          const auto& ends = current.edge(e);
+          for (int side = 0; side < 2; ++side)
+            largest = (std::max)(largest, internal::frame_weight(at(ends[1 - side]), at(left),
+                                                                 at(ends[side]), at(right)));
+        }
+      return largest;
+    };
+    bool any_moved = false;
     for (Index v : offenders) {
+      if (stuck.count(v))
+        continue;
       double shortest = std::numeric_limits<double>::infinity();
       const auto [nb, ne] = current.neighbours(v);
+      // A boundary vertex keeps the domain only by sliding along a straight boundary.
+      const bool boundary = current.is_boundary_vertex(v);
+      if (boundary && !collinear(points[nb[0]], points[v], points[*(ne - 1)])) {
+        stuck.insert(v);
+        continue;
+      }
       for (auto w = nb; w != ne; ++w) {
         const double dx = CGAL::to_double(points[*w].x() - points[v].x());
         const double dy = CGAL::to_double(points[*w].y() - points[v].y());
@@ -210,29 +270,56 @@ Planar_domain<GeomTraits> perturb_degenerate_vertices(
       static const int directions[8][2] = {{1, 0}, {0, 1},  {-1, 0},  {0, -1},
                                            {1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
       bool moved = false;
+      // Along the boundary line: steps of the boundary direction scaled to the unit.
+      const Point_2& a = points[nb[0]];
+      const Point_2& b = points[*(ne - 1)];
+      const double length =
+          std::hypot(CGAL::to_double(b.x() - a.x()), CGAL::to_double(b.y() - a.y()));
+      std::optional<Point_2> fallback; // the smallest admissible move
       for (int k = 20; k >= 3 && !moved; --k) {
         const FT step = FT(std::ldexp(unit, -k));
         for (const auto& d : directions) {
-          const Point_2 candidate(points[v].x() + FT(d[0]) * step, points[v].y() + FT(d[1]) * step);
-          if (candidate == points[v] || !admissible(v, candidate))
+          if (boundary && (d[1] != 0 || d[0] == 0))
+            continue; // two directions along the line: +-(b - a)
+          const FT along = FT(d[0]) * FT(std::ldexp(unit, -k) / length);
+          const Point_2 candidate =
+              boundary ? Point_2(points[v].x() + along * (b.x() - a.x()),
+                                 points[v].y() + along * (b.y() - a.y()))
+                       : Point_2(points[v].x() + FT(d[0]) * step, points[v].y() + FT(d[1]) * step);
+          if (candidate == points[v] || (boundary && !collinear(a, candidate, b)) ||
+              !admissible(v, candidate))
             continue;
-          const double dx = CGAL::to_double(candidate.x() - points[v].x());
-          const double dy = CGAL::to_double(candidate.y() - points[v].y());
-          moves.push_back({v, points[v], candidate, std::hypot(dx, dy)});
-          points[v] = candidate;
+          if (!fallback)
+            fallback = candidate;
+          if (largest_weight(v, candidate) > weight_bound)
+            continue;
           moved = true;
+          fallback = candidate;
           break;
         }
       }
-      if (!moved)
+      if (fallback) {
+        const double dx = CGAL::to_double(fallback->x() - points[v].x());
+        const double dy = CGAL::to_double(fallback->y() - points[v].y());
+        moves.push_back({v, points[v], *fallback, std::hypot(dx, dy)});
+        points[v] = *fallback;
+        moved = true;
+        any_moved = true;
+      }
+      if (!moved && boundary)
+        stuck.insert(v); // left to re-routing
+      else if (!moved)
         throw Invalid_input("perturbation: no small move of vertex " + std::to_string(v) + " " +
                             internal::point_to_string(points[v]) +
                             " removes its degenerate frames");
     }
+    if (!any_moved)
+      return current;
     current = Planar_domain<GeomTraits>(std::move(points), current.faces(), current.geom_traits());
   }
-  if (!find_degenerate_frames(current).frames.empty())
-    throw Invalid_input("perturbation: degenerate frames remain after 8 rounds");
+  for (const auto& frame : find_degenerate_frames(current).frames)
+    if (!stuck.count(frame.vertex) && !current.is_boundary_vertex(frame.vertex))
+      throw Invalid_input("perturbation: degenerate frames remain after 8 rounds");
   return current;
 }
 
