@@ -200,38 +200,10 @@ Planar_domain<GeomTraits> perturb_degenerate_vertices(
     std::vector<Point_2> points = current.points();
     auto orientation = current.geom_traits().orientation_2_object();
     auto collinear = current.geom_traits().collinear_2_object();
-    // Is every frame and triangle involving v fine with v at `p`?
-    auto admissible = [&](Index v, const Point_2& p) {
+    // Calls frame(left, end, other end, right) for both ends of every interior edge of a
+    // face around v, with v at `p` (this covers v as an end and v as an apex).
+    auto for_each_frame = [&](Index v, const Point_2& p, const auto& frame) {
       auto at = [&](Index w) -> const Point_2& { return w == v ? p : points[w]; };
-      const auto [fb, fe] = current.star_faces(v);
-      for (auto f = fb; f != fe; ++f) {
-        const auto& t = current.face(*f);
-        if (orientation(at(t[0]), at(t[1]), at(t[2])) != CGAL::LEFT_TURN)
-          return false;
-      }
-      // Frames at edges touching v's star: both ends of every interior edge of a face
-      // around v (this covers v as an end and v as an apex).
-      for (auto f = fb; f != fe; ++f)
-        for (int i = 0; i < 3; ++i) {
-          const Index e = current.face_edge(*f, i);
-          if (current.is_boundary_edge(e))
-            continue;
-          const auto& ef = current.edge_faces(e);
-          const Index left = current.opposite_vertex(ef[0], e);
-          const Index right = current.opposite_vertex(ef[1], e);
-          for (Index end : current.edge(e))
-            if (collinear(at(left), at(end), at(right)) ||
-                (!exact && internal::numerically_collinear(at(left), at(end), at(right))))
-              return false;
-        }
-      return true;
-    };
-    // The largest regular propagation weight of the frames around v with v at `p`: moves
-    // that leave every one below `weight_bound` are preferred (a tiny move off a collinear
-    // frame leaves it nearly degenerate, with weights in the millions).
-    auto largest_weight = [&](Index v, const Point_2& p) {
-      auto at = [&](Index w) -> const Point_2& { return w == v ? p : points[w]; };
-      double largest = 0;
       const auto [fb, fe] = current.star_faces(v);
       for (auto f = fb; f != fe; ++f)
         for (int i = 0; i < 3; ++i) {
@@ -243,9 +215,35 @@ Planar_domain<GeomTraits> perturb_degenerate_vertices(
           const Index right = current.opposite_vertex(ef[1], e);
           const auto& ends = current.edge(e);
           for (int side = 0; side < 2; ++side)
-            largest = (std::max)(largest, internal::frame_weight(at(ends[1 - side]), at(left),
-                                                                 at(ends[side]), at(right)));
+            frame(at(left), at(ends[side]), at(ends[1 - side]), at(right));
         }
+    };
+    // Is every frame and triangle involving v fine with v at `p`?
+    auto admissible = [&](Index v, const Point_2& p) {
+      auto at = [&](Index w) -> const Point_2& { return w == v ? p : points[w]; };
+      const auto [fb, fe] = current.star_faces(v);
+      for (auto f = fb; f != fe; ++f) {
+        const auto& t = current.face(*f);
+        if (orientation(at(t[0]), at(t[1]), at(t[2])) != CGAL::LEFT_TURN)
+          return false;
+      }
+      bool degenerate = false;
+      for_each_frame(v, p,
+                     [&](const Point_2& l, const Point_2& end, const Point_2&, const Point_2& r) {
+                       degenerate = degenerate || collinear(l, end, r) ||
+                                    (!exact && internal::numerically_collinear(l, end, r));
+                     });
+      return !degenerate;
+    };
+    // The largest regular propagation weight of the frames around v with v at `p`: moves
+    // that leave every one below `weight_bound` are preferred (a tiny move off a collinear
+    // frame leaves it nearly degenerate, with weights in the millions).
+    auto largest_weight = [&](Index v, const Point_2& p) {
+      double largest = 0;
+      for_each_frame(
+          v, p, [&](const Point_2& l, const Point_2& end, const Point_2& other, const Point_2& r) {
+            largest = (std::max)(largest, internal::frame_weight(other, l, end, r));
+          });
       return largest;
     };
     bool any_moved = false;
