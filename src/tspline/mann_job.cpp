@@ -224,7 +224,12 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   const TS::Planar_domain<K>& domain = input.domain;
 
   const int order = TS::mann_derivative_order(job.degree);
-  const auto jets = TS::estimate_vertex_derivatives(domain, input.values, order);
+  std::vector<int> degrees;
+  const auto jets = TS::estimate_vertex_derivatives(domain, input.values, order, &degrees);
+  // Small sets: the local polynomials' degree is lowered where the data cannot determine it.
+  const std::size_t lowered = static_cast<std::size_t>(
+      std::count_if(degrees.begin(), degrees.end(), [order](int d) { return d < order; }));
+  const int lowest = degrees.empty() ? order : *std::min_element(degrees.begin(), degrees.end());
   timings.set("estimate_derivatives", clock.lap());
   const TS::Mann_interpolant<K> interpolant = TS::mann_interpolant(domain, jets, job.degree);
   timings.set("interpolant", clock.lap());
@@ -260,6 +265,8 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   report.set("continuity", interpolant.continuity);
   report.set("derivative_order", order);
   report.set("derivatives", "estimated by local polynomial least squares");
+  report.set("derivative_degree_lowered_vertices", lowered);
+  report.set("lowest_derivative_degree", lowest);
   report.set("vertices", domain.number_of_vertices());
   report.set("faces", domain.number_of_faces());
   report.set("interior_edges", domain.number_of_interior_edges());
@@ -294,6 +301,10 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
       << "  domain: " << domain.number_of_vertices() << " vertices, " << domain.number_of_faces()
       << " triangles, " << domain.number_of_interior_edges() << " interior edges\n"
       << "  derivatives up to order " << order
+      << (lowered == 0
+              ? std::string()
+              : " (the local polynomial's degree lowered to " + std::to_string(lowest) + " at " +
+                    std::to_string(lowered) + " vertices: too few points determine it)")
       << " estimated at every vertex (local least squares)\n"
       << "  degree " << job.degree << ", C^" << interpolant.continuity << " adjustment: moved "
       << interpolant.adjustment.number_of_touched_points() << " control points across "

@@ -287,14 +287,19 @@ mann_interpolant(const Planar_domain<GeomTraits>& domain,
   \param domain the domain triangulation; neighbourhoods follow its edges
   \param values `values[v]` is the datum at vertex `v`
   \param order the highest derivative order \f$d\f$, \f$0 \le d \le 10\f$
-  \throws Invalid_input if `values` does not hold one value per vertex, `order` is out of
-  range, or a vertex's connected component has too few vertices, or vertices too special
-  (all on a conic for \f$d = 2\f$, ...), to determine the polynomial
+  \param degrees if not null, receives for each vertex the degree actually fitted: lower
+  than `order` where the vertex's whole connected component has too few vertices, or
+  vertices too special (all on a conic for \f$d = 2\f$, ...), to determine a polynomial of
+  degree `order`; the degree is then lowered until they do (a plane through three points,
+  a constant for fewer), and the higher derivatives are zero
+  \throws Invalid_input if `values` does not hold one value per vertex or `order` is out of
+  range
 */
 template <class GeomTraits>
 std::vector<Polynomial_surface<GeomTraits>>
 estimate_vertex_derivatives(const Planar_domain<GeomTraits>& domain,
-                            const std::vector<typename GeomTraits::FT>& values, int order) {
+                            const std::vector<typename GeomTraits::FT>& values, int order,
+                            std::vector<int>* degrees = nullptr) {
   using FT = typename GeomTraits::FT;
   using Index = std::uint32_t;
   const std::string where = "derivative estimate: ";
@@ -304,13 +309,20 @@ estimate_vertex_derivatives(const Planar_domain<GeomTraits>& domain,
                         " vertices");
   if (order < 0 || order > 10)
     throw Invalid_input(where + "order " + std::to_string(order) + " outside 0..10");
-  // The monomials u^p v^q with 1 <= p + q <= order.
+  // The monomials u^p v^q with 1 <= p + q <= degree; u of them, and the neighbourhood size
+  // aimed at (half as many points again as unknowns).
   std::vector<std::pair<int, int>> monomials;
-  for (int total = 1; total <= order; ++total)
-    for (int p = total; p >= 0; --p)
-      monomials.emplace_back(p, total - p);
-  const std::size_t u = monomials.size();
-  const std::size_t target = u + (u + 1) / 2;
+  std::size_t u = 0, target = 0;
+  auto set_degree = [&](int degree) {
+    monomials.clear();
+    for (int total = 1; total <= degree; ++total)
+      for (int p = total; p >= 0; --p)
+        monomials.emplace_back(p, total - p);
+    u = monomials.size();
+    target = u + (u + 1) / 2;
+  };
+  if (degrees != nullptr)
+    degrees->assign(V, order);
 
   std::vector<Polynomial_surface<GeomTraits>> result;
   result.reserve(V);
@@ -323,6 +335,8 @@ estimate_vertex_derivatives(const Planar_domain<GeomTraits>& domain,
     neighbourhood.clear();
     frontier.assign(1, v);
     stamp[v] = v;
+    int degree = order;
+    set_degree(degree);
     bool solved = u == 0;
     while (!solved) {
       // One more ring.
@@ -338,9 +352,12 @@ estimate_vertex_derivatives(const Planar_domain<GeomTraits>& domain,
       frontier.swap(next);
       neighbourhood.insert(neighbourhood.end(), frontier.begin(), frontier.end());
       const bool exhausted = frontier.empty();
-      if (neighbourhood.size() < u || (neighbourhood.size() < target && !exhausted)) {
-        if (exhausted)
-          break;
+      if (neighbourhood.size() < target && !exhausted)
+        continue;
+      if (neighbourhood.size() < u) {
+        // The whole component cannot determine this degree: lower it (a constant at worst).
+        set_degree(--degree);
+        solved = u == 0;
         continue;
       }
       // Scaled local coordinates: |u|, |v| <= 1.
@@ -432,16 +449,13 @@ estimate_vertex_derivatives(const Planar_domain<GeomTraits>& domain,
                               coefficients[col] * scale);
         }
       } else if (exhausted) {
-        break;
+        // Points on a curve of this degree: one degree lower.
+        set_degree(--degree);
+        solved = u == 0;
       }
     }
-    if (!solved)
-      throw Invalid_input(where + "vertex " + std::to_string(v) + " " +
-                          internal::point_to_string(domain.point(v)) + ": its " +
-                          std::to_string(neighbourhood.size()) +
-                          " connected neighbours do not determine a polynomial of degree " +
-                          std::to_string(order) + " (" + std::to_string(u + 1) +
-                          " coefficients; too few points, or points on a curve of that degree)");
+    if (degrees != nullptr)
+      (*degrees)[v] = degree;
     result.push_back(std::move(jet));
   }
   return result;
