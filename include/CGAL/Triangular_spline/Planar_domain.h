@@ -9,6 +9,8 @@
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Cartesian_converter.h>
+#include <CGAL/Unique_hash_map.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/number_utils.h>
 
@@ -16,7 +18,6 @@
 #include <array>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -546,6 +547,29 @@ Planar_domain<K2> convert_domain(const Planar_domain<K1>& domain) {
   return Planar_domain<K2>(std::move(points), domain.faces());
 }
 
+namespace internal {
+
+// Hilbert sorting of (point, handle) pairs with ties broken by the other coordinate: a strict
+// total order on distinct points, so the numbering does not depend on the input order.
+template <class GeomTraits, class Handle>
+struct Lexicographic_hilbert_traits {
+  using Point_2 = std::pair<typename GeomTraits::Point_2, Handle>;
+  struct Less_x_2 {
+    bool operator()(const Point_2& a, const Point_2& b) const {
+      return GeomTraits().compare_xy_2_object()(a.first, b.first) == CGAL::SMALLER;
+    }
+  };
+  struct Less_y_2 {
+    bool operator()(const Point_2& a, const Point_2& b) const {
+      return GeomTraits().compare_yx_2_object()(a.first, b.first) == CGAL::SMALLER;
+    }
+  };
+  Less_x_2 less_x_2_object() const { return Less_x_2(); }
+  Less_y_2 less_y_2_object() const { return Less_y_2(); }
+};
+
+} // namespace internal
+
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief returns the domain made of the finite faces of a CGAL 2D triangulation for which
@@ -560,25 +584,41 @@ Planar_domain<GeomTraits> domain_from_triangulation_2(const Triangulation& trian
                                                       const InDomain& in_domain,
                                                       VertexHandles& vertex_map) {
   using Index = typename Planar_domain<GeomTraits>::Index;
-  std::vector<typename GeomTraits::Point_2> points;
-  std::vector<std::array<Index, 3>> triangles;
-  std::map<typename Triangulation::Vertex_handle, Index> index;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  constexpr Index none = Planar_domain<GeomTraits>::null_index;
+  using Point_2 = typename GeomTraits::Point_2;
+  // Vertices are numbered along a Hilbert curve: neighbours get near indices, which keeps
+  // every later pass over the domain cache-friendly. A hash map by handle, not a std::map.
+  CGAL::Unique_hash_map<Vertex_handle, Index> index(none, triangulation.number_of_vertices());
+  std::vector<std::pair<Point_2, Vertex_handle>> used;
+  for (auto f : triangulation.finite_face_handles())
+    if (in_domain(f))
+      for (int i = 0; i < 3; ++i)
+        if (index[f->vertex(i)] == none) {
+          index[f->vertex(i)] = 0;
+          used.emplace_back(f->vertex(i)->point(), f->vertex(i));
+        }
+  CGAL::hilbert_sort(used.begin(), used.end(),
+                     internal::Lexicographic_hilbert_traits<GeomTraits, Vertex_handle>(),
+                     CGAL::Hilbert_sort_median_policy());
+  std::vector<Point_2> points;
+  points.reserve(used.size());
   vertex_map.clear();
-  for (auto f : triangulation.finite_face_handles()) {
-    if (!in_domain(f))
-      continue;
-    std::array<Index, 3> t;
-    for (int i = 0; i < 3; ++i) {
-      auto v = f->vertex(i);
-      auto [it, inserted] = index.emplace(v, static_cast<Index>(points.size()));
-      if (inserted) {
-        points.push_back(v->point());
-        vertex_map.push_back(v);
-      }
-      t[static_cast<std::size_t>(i)] = it->second;
-    }
-    triangles.push_back(t);
+  for (const auto& [point, v] : used) {
+    index[v] = static_cast<Index>(points.size());
+    points.push_back(point);
+    vertex_map.push_back(v);
   }
+  std::vector<std::array<Index, 3>> triangles;
+  for (auto f : triangulation.finite_face_handles())
+    if (in_domain(f))
+      triangles.push_back({index[f->vertex(0)], index[f->vertex(1)], index[f->vertex(2)]});
+  // Each face starts at its smallest vertex (the triangulation's rotation depends on the
+  // insertion order), and faces are sorted: near faces get near indices too, and the order
+  // is total (distinct faces differ as rotated triples), the same for every input order.
+  for (auto& t : triangles)
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  std::sort(triangles.begin(), triangles.end());
   // A triangulation's faces are embedded: no overlap test needed.
   return Planar_domain<GeomTraits>(std::move(points), std::move(triangles), GeomTraits(), false);
 }
