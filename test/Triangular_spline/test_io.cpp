@@ -1023,3 +1023,50 @@ TYPED_TEST(MeshDomain, RejectsFractionalAndLongIndices) {
     EXPECT_NE(std::string(e.what()).find("(1000000 characters)"), std::string::npos);
   }
 }
+
+// Issue 13, found by fuzz/ (libFuzzer): headers that CGAL's readers accept but read
+// differently from the checks, so that the checks were skipped and CGAL hit undefined
+// behaviour (a face size of 1e151 converted to std::size_t, an element that does not
+// exist, a null dereference in a release build).
+TYPED_TEST(MeshDomain, RejectsHeadersThatBypassTheChecks) {
+  using K = TypeParam;
+  Temporary_directory dir;
+  auto read = [](const std::string& path) { return [path] { TS::read_mesh_domain<K>(path); }; };
+  const std::string bad = TSPLINE_BAD_DATA_DIR;
+  // CGAL's keyword ends at the first character that is not a letter or digit.
+  const std::string mangled = bad + "/mangled_keyword.off";
+  EXPECT_TRUE(throws_with(read(mangled), {mangled + ":1:", "invalid OFF keyword \"OFF~\""}));
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  const std::string skel = dir.write("skel.off", "SKEL\n3 1\n" + vertices + "1e151 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(skel), {skel + ":1:", "SKEL"}));
+  // Homogeneous and n-dimensional OFF are checked like OFF (they were left to CGAL).
+  const std::string homogeneous =
+      dir.write("h.off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n1e151 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(homogeneous), {homogeneous + ":6:", "invalid vertex count"}));
+  const std::string n_dimensional =
+      dir.write("n.off", "nOFF\n3\n3 1 0\n" + vertices + "1e151 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(n_dimensional), {n_dimensional + ":7:", "invalid vertex count"}));
+  const std::string many = dir.write("many.off", "4OFF 3 2000000000 0\n" + vertices);
+  EXPECT_TRUE(throws_with(read(many), {many + ":1:", "announces 2000000000 faces"}));
+  const std::string homogeneous_ok =
+      dir.write("h_ok.off", "4OFF\n3 1 0\n0 0 0 1\n2 0 0 2\n0 3 0 3\n3 0 1 2\n");
+  EXPECT_EQ(TS::read_mesh_domain<K>(homogeneous_ok).first.number_of_faces(), 1u);
+  // PLY: a property before any element, and integer coordinates.
+  const std::string before = bad + "/property_before_element.ply";
+  EXPECT_TRUE(throws_with(read(before), {before + ":3:", "property before the first element"}));
+  const std::string ply_line_1 =
+      dir.write("p.ply", "ply extra\nformat ascii 1.0\nproperty float x\n");
+  EXPECT_TRUE(throws_with(read(ply_line_1), {ply_line_1 + ":3:", "before the first element"}));
+  const std::string integer = bad + "/integer_coordinate.ply";
+  EXPECT_TRUE(throws_with(read(integer), {integer + ":5:", "coordinate \"y\" must be a float"}));
+  const std::string list = dir.write(
+      "list.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty list uchar float x\n");
+  EXPECT_TRUE(throws_with(read(list), {list + ":4:", "coordinate \"x\""}));
+  // CGAL takes the end of the file for the end of the header: 10^8 vertices from nothing.
+  const std::string no_end = bad + "/no_end_header.ply";
+  EXPECT_TRUE(throws_with(read(no_end), {no_end + ":3:", "no end_header"}));
+  // CGAL names a property by its third word: "property int y x" is the property y.
+  const std::string named =
+      dir.write("named.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty int y x\n");
+  EXPECT_TRUE(throws_with(read(named), {named + ":4:", "coordinate \"y\""}));
+}

@@ -106,42 +106,75 @@ private:
   std::size_t m_line;
 };
 
-// OFF, as CGAL reads it: a header "[ST][C][N][4][n]OFF" (optional), the counts V F E, then
-// one vertex per line and one face "n i_1 ... i_n [colour]" per line.
+// The keyword of an OFF file as CGAL's File_header_OFF reads it: the first character and
+// the letters and digits after it, so "OFF~3" is the keyword OFF and then the count 3.
+struct Off_keyword {
+  std::size_t length = 1;     // of the keyword within the token
+  std::string base;           // what follows the prefixes [ST][C][N][4][n]: CGAL wants OFF or SKEL
+  bool n_dimensional = false; // nOFF: the dimension precedes the counts
+};
+
+inline Off_keyword off_keyword(const std::string& token) {
+  Off_keyword k;
+  while (k.length < token.size() && std::isalnum(static_cast<unsigned char>(token[k.length])))
+    ++k.length;
+  std::size_t j = k.length >= 2 && token.compare(0, 2, "ST") == 0 ? 2 : 0;
+  for (const char prefix : {'C', 'N', '4', 'n'})
+    if (j < k.length && token[j] == prefix) {
+      k.n_dimensional = prefix == 'n';
+      ++j;
+    }
+  k.base = token.substr(j, k.length - j);
+  return k;
+}
+
+// OFF, as CGAL reads it: a header "[ST][C][N][4][n]OFF" (optional), the counts V F E (after
+// the dimension for nOFF), then one vertex per line and one face "n i_1 ... i_n [colour]"
+// per line. Every header CGAL accepts is checked: a keyword it would read differently from
+// us, or a skeleton (SKEL, read by the same scanner), is refused here.
 inline void check_off_file(const std::string& path, std::istream& input, std::uint64_t file_bytes) {
   Token_lines lines(input, true);
   std::vector<std::string> tokens;
   std::vector<std::string> header; // keyword and counts, over as many lines as they take
   std::size_t used = 0;            // tokens of the current line taken by the header
   std::size_t needed = 3;
+  bool n_dimensional = false;
   while (header.size() < needed) {
     if (!lines.next(tokens))
       return; // too short: CGAL's reader says so
     for (used = 0; used < tokens.size() && header.size() < needed; ++used) {
       header.push_back(tokens[used]);
       const std::string& t = header.back();
-      if (header.size() == 1 && t.size() >= 3 && t.compare(t.size() - 3, 3, "OFF") == 0) {
-        if (t.find('4') != std::string::npos || t[0] == 'n')
-          return; // homogeneous or n-dimensional: not a height field; CGAL decides
-        needed = 4;
-      } else if (header.size() == 2 && needed == 4 && t == "BINARY") {
-        // CGAL skips the rest of the line; big-endian int32 counts V F E follow.
-        unsigned char b[8];
-        if (!input.read(reinterpret_cast<char*>(b), sizeof b))
+      const Off_keyword keyword = header.size() == 1 ? off_keyword(t) : Off_keyword();
+      if (keyword.base == "SKEL")
+        fail_at(path, lines.line(),
+                "SKEL (a skeleton of polylines) is not a supported mesh format");
+      if (keyword.base == "OFF") {
+        if (keyword.length != t.size())
+          fail_at(path, lines.line(), "invalid OFF keyword " + internal::quoted(t));
+        n_dimensional = keyword.n_dimensional;
+        needed = n_dimensional ? 5 : 4;
+      } else if (header.size() == 2 && needed >= 4 && t == "BINARY") {
+        // CGAL skips the rest of the line; big-endian int32 counts [dimension] V F E follow.
+        unsigned char b[12];
+        const int first = n_dimensional ? 4 : 0;
+        if (!input.read(reinterpret_cast<char*>(b), first + 8))
           return;
         auto int32 = [&b](int k) {
           return static_cast<std::int32_t>(std::uint32_t(b[k]) << 24 |
                                            std::uint32_t(b[k + 1]) << 16 |
                                            std::uint32_t(b[k + 2]) << 8 | std::uint32_t(b[k + 3]));
         };
-        const std::int32_t V = int32(0), F = int32(4);
+        const std::int32_t V = int32(first), F = int32(first + 4);
         if (V < 0 || F < 0)
           fail_at(path, lines.line(),
                   "negative " + std::string(V < 0 ? "vertex" : "face") + " count " +
                       std::to_string(V < 0 ? V : F) + " in the binary header");
-        // A vertex is three float32, a face at least its size and its colour size (int32).
-        const std::uint64_t left = claim_bytes(path, lines.line(), file_bytes, file_bytes,
-                                               std::uint64_t(V), 12, "vertices");
+        // A vertex is three float32 (one at least in n dimensions), a face at least its
+        // size and its colour size (int32).
+        const std::uint64_t left =
+            claim_bytes(path, lines.line(), file_bytes, file_bytes, std::uint64_t(V),
+                        n_dimensional ? 4 : 12, "vertices");
         claim_bytes(path, lines.line(), file_bytes, left, std::uint64_t(F), 8, "faces");
         return;
       }
@@ -269,12 +302,17 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
   bool ascii = true, big_endian = false;
   std::vector<Ply_element> elements;
   for (bool end = false; !end;) {
-    if (!std::getline(input, text))
-      return; // no end_header: CGAL's reader says so
+    if (!std::getline(input, text)) {
+      if (line == 0)
+        return; // empty: CGAL's reader says so
+      // CGAL's reader takes the end of the file for the end of the header, then reads as
+      // many elements as announced, from nothing (10^8 vertices: seconds, gigabytes).
+      fail_at(path, line, "the PLY header has no end_header line");
+    }
     const std::vector<std::string> tokens = split_tokens(text);
     ++line;
-    if (line == 1 && (tokens.size() != 1 || tokens[0] != "ply"))
-      return; // not a PLY file: CGAL's reader says so
+    if (line == 1 && (tokens.empty() || tokens[0] != "ply"))
+      return; // not a PLY file: CGAL's reader says so (it ignores what follows "ply")
     if (tokens.empty() || line == 1)
       continue;
     if (tokens[0] == "format" && tokens.size() >= 2) {
@@ -283,7 +321,10 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
     } else if (tokens[0] == "element" && tokens.size() >= 3) {
       elements.push_back(
           {tokens[1], header_count(path, line, tokens[2], "element count"), line, {}});
-    } else if (tokens[0] == "property" && tokens.size() >= 3 && !elements.empty()) {
+    } else if (tokens[0] == "property" && elements.empty()) {
+      // CGAL's reader adds a property to the last element, here to none: undefined behaviour.
+      fail_at(path, line, "PLY property before the first element");
+    } else if (tokens[0] == "property" && tokens.size() >= 3) {
       Ply_property p;
       bool integer = false, is_signed = false;
       p.list = tokens[1] == "list";
@@ -297,7 +338,15 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
             (p.value_bytes = ply_type(tokens[3], p.value_integer, is_signed)) == 0)
           fail_at(path, line, "invalid PLY list property " + internal::quoted(text));
       }
-      p.name = tokens.back();
+      p.name = tokens[p.list ? 4 : 2]; // as CGAL reads it: what follows is ignored
+      // CGAL's point reader takes x, y and z as float or double, with no check in a
+      // release build (a null dereference).
+      const std::string& element = elements.back().name;
+      if ((element == "vertex" || element == "vertices") &&
+          (p.name == "x" || p.name == "y" || p.name == "z") && (p.list || integer))
+        fail_at(path, line,
+                "the vertex coordinate " + internal::quoted(p.name) +
+                    " must be a float or double property, not " + internal::quoted(text));
       elements.back().properties.push_back(p);
     } else if (tokens[0] == "end_header") {
       end = true;
