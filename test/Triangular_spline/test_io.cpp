@@ -1048,6 +1048,17 @@ TYPED_TEST(MeshDomain, RejectsHeadersThatBypassTheChecks) {
   EXPECT_TRUE(throws_with(read(n_dimensional), {n_dimensional + ":7:", "invalid vertex count"}));
   const std::string many = dir.write("many.off", "4OFF 3 2000000000 0\n" + vertices);
   EXPECT_TRUE(throws_with(read(many), {many + ":1:", "announces 2000000000 faces"}));
+  // Numbers glued to the counts: CGAL reads "3-10" as the dimension 3 and 10^19 vertices,
+  // "0-1-2-3" as the edge count 0 and a first vertex, one line off from the checks.
+  const std::string glued_dimension = bad + "/glued_dimension.off";
+  EXPECT_TRUE(
+      throws_with(read(glued_dimension), {glued_dimension + ":3:", "invalid dimension \"3-10\""}));
+  const std::string glued_edges = bad + "/glued_edge_count.off";
+  EXPECT_TRUE(
+      throws_with(read(glued_edges), {glued_edges + ":2:", "invalid edge count \"0-1-2-3\""}));
+  // CGAL doubles the edge count in an int.
+  const std::string edges = bad + "/huge_edge_count.off";
+  EXPECT_TRUE(throws_with(read(edges), {edges + ":2:", "edge count \"2147483647\" is out of"}));
   const std::string homogeneous_ok =
       dir.write("h_ok.off", "4OFF\n3 1 0\n0 0 0 1\n2 0 0 2\n0 3 0 3\n3 0 1 2\n");
   EXPECT_EQ(TS::read_mesh_domain<K>(homogeneous_ok).first.number_of_faces(), 1u);
@@ -1065,6 +1076,13 @@ TYPED_TEST(MeshDomain, RejectsHeadersThatBypassTheChecks) {
   // CGAL takes the end of the file for the end of the header: 10^8 vertices from nothing.
   const std::string no_end = bad + "/no_end_header.ply";
   EXPECT_TRUE(throws_with(read(no_end), {no_end + ":3:", "no end_header"}));
+  // A binary list whose length lies past the end of the file: CGAL resized to garbage.
+  const std::string short_list = bad + "/short_binary_list.ply";
+  EXPECT_TRUE(throws_with(read(short_list), {short_list + ": vertex 1, l: the file ends"}));
+  // CGAL reads the format from line 2 whatever its first word: binary here, a list of
+  // 0x20202020 ints (2 GB) from the blanks that made it an empty ASCII body for the checks.
+  const std::string format = bad + "/format_line.ply";
+  EXPECT_TRUE(throws_with(read(format), {format + ": vertex 0, l: a list of 538976288 values"}));
   // CGAL names a property by its third word: "property int y x" is the property y.
   const std::string named =
       dir.write("named.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty int y x\n");

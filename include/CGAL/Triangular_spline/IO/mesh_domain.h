@@ -114,6 +114,9 @@ struct Off_keyword {
   bool n_dimensional = false; // nOFF: the dimension precedes the counts
 };
 
+// CGAL's OFF header computes twice the edge count in an int.
+constexpr std::uint64_t max_edge_count = 0x3fffffff;
+
 inline Off_keyword off_keyword(const std::string& token) {
   Off_keyword k;
   while (k.length < token.size() && std::isalnum(static_cast<unsigned char>(token[k.length])))
@@ -156,20 +159,23 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
         needed = n_dimensional ? 5 : 4;
       } else if (header.size() == 2 && needed >= 4 && t == "BINARY") {
         // CGAL skips the rest of the line; big-endian int32 counts [dimension] V F E follow.
-        unsigned char b[12];
+        unsigned char b[16];
         const int first = n_dimensional ? 4 : 0;
-        if (!input.read(reinterpret_cast<char*>(b), first + 8))
+        if (!input.read(reinterpret_cast<char*>(b), first + 12))
           return;
         auto int32 = [&b](int k) {
           return static_cast<std::int32_t>(std::uint32_t(b[k]) << 24 |
                                            std::uint32_t(b[k + 1]) << 16 |
                                            std::uint32_t(b[k + 2]) << 8 | std::uint32_t(b[k + 3]));
         };
-        const std::int32_t V = int32(first), F = int32(first + 4);
+        const std::int32_t V = int32(first), F = int32(first + 4), E = int32(first + 8);
         if (V < 0 || F < 0)
           fail_at(path, lines.line(),
                   "negative " + std::string(V < 0 ? "vertex" : "face") + " count " +
                       std::to_string(V < 0 ? V : F) + " in the binary header");
+        if (E < 0 || std::uint64_t(E) > max_edge_count)
+          fail_at(path, lines.line(),
+                  "edge count " + std::to_string(E) + " in the binary header is out of range");
         // A vertex is three float32 (one at least in n dimensions), a face at least its
         // size and its colour size (int32).
         const std::uint64_t left =
@@ -185,6 +191,14 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
   const std::size_t at = lines.line();
   const std::uint64_t V = header_count(path, at, header[needed - 3], "vertex count");
   const std::uint64_t F = header_count(path, at, header[needed - 2], "face count");
+  // CGAL reads the header numbers with operator>>, which stops inside a token: "0-1-2-3"
+  // is the edge count 0 and then the vertex (-1, -2, -3). Plain counts keep its lines and
+  // ours the same.
+  // CGAL doubles the edge count in an int.
+  if (header_count(path, at, header[needed - 1], "edge count") > max_edge_count)
+    fail_at(path, at, "edge count " + internal::quoted(header[needed - 1]) + " is out of range");
+  if (n_dimensional)
+    header_count(path, at, header[1], "dimension");
   // A vertex line "x y z\n" takes at least 6 bytes, a face line "n\n" at least 2.
   std::uint64_t left = claim_bytes(path, at, file_bytes, file_bytes, V, 6, "vertices");
   claim_bytes(path, at, file_bytes, left, F, 2, "faces");
@@ -315,7 +329,11 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
       return; // not a PLY file: CGAL's reader says so (it ignores what follows "ply")
     if (tokens.empty() || line == 1)
       continue;
-    if (tokens[0] == "format" && tokens.size() >= 2) {
+    if (line == 2) {
+      // CGAL takes the second line for the format line, whatever its first word, and
+      // ignores "format" on any other line.
+      if (tokens.size() < 3)
+        return; // CGAL's reader says so
       ascii = tokens[1] == "ascii";
       big_endian = tokens[1] == "binary_big_endian";
     } else if (tokens[0] == "element" && tokens.size() >= 3) {
@@ -410,9 +428,12 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
     for (std::uint64_t i = 0; i < e.count; ++i)
       for (const Ply_property& p : e.properties) {
         unsigned char bytes[8] = {0};
+        // CGAL's reader would resize a list to a length read past the end of the file
+        // (uninitialised bytes), before it looks at the stream.
         if (left < static_cast<std::uint64_t>(p.size_bytes) ||
             !input.read(reinterpret_cast<char*>(bytes), p.size_bytes))
-          return; // short file: CGAL's reader says so
+          throw Invalid_input(path + ": " + e.name + " " + std::to_string(i) + ", " + p.name +
+                              ": the file ends before the elements its header announces");
         left -= static_cast<std::uint64_t>(p.size_bytes);
         if (!p.list)
           continue;
