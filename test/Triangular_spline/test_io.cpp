@@ -1059,6 +1059,9 @@ TYPED_TEST(MeshDomain, RejectsHeadersThatBypassTheChecks) {
   // CGAL doubles the edge count in an int.
   const std::string edges = bad + "/huge_edge_count.off";
   EXPECT_TRUE(throws_with(read(edges), {edges + ":2:", "edge count \"2147483647\" is out of"}));
+  // CGAL divides by w after asserting w != 0 (a debug build threw Assertion_exception).
+  const std::string w_zero = bad + "/homogeneous_zero.off";
+  EXPECT_TRUE(throws_with(read(w_zero), {w_zero + ":3:", "vertex 0: w = 0"}));
   const std::string homogeneous_ok =
       dir.write("h_ok.off", "4OFF\n3 1 0\n0 0 0 1\n2 0 0 2\n0 3 0 3\n3 0 1 2\n");
   EXPECT_EQ(TS::read_mesh_domain<K>(homogeneous_ok).first.number_of_faces(), 1u);
@@ -1083,6 +1086,9 @@ TYPED_TEST(MeshDomain, RejectsHeadersThatBypassTheChecks) {
   // 0x20202020 ints (2 GB) from the blanks that made it an empty ASCII body for the checks.
   const std::string format = bad + "/format_line.ply";
   EXPECT_TRUE(throws_with(read(format), {format + ": vertex 0, l: a list of 538976288 values"}));
+  // CGAL reads "1.5-7" as the x 1.5 and then the list length -7.
+  const std::string glued = bad + "/glued_number.ply";
+  EXPECT_TRUE(throws_with(read(glued), {glued + ":7:", "\"1.5-7\" is not a number"}));
   // CGAL names a property by its third word: "property int y x" is the property y.
   const std::string named =
       dir.write("named.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty int y x\n");

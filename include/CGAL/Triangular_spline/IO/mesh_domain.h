@@ -16,6 +16,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -53,6 +54,32 @@ inline bool parse_unsigned(const std::string& token, std::uint64_t& value) {
 inline bool is_integer_literal(const std::string& token) {
   const std::size_t sign = !token.empty() && (token[0] == '+' || token[0] == '-') ? 1 : 0;
   return token.size() > sign && token.find_first_not_of("0123456789", sign) == std::string::npos;
+}
+
+// A decimal floating-point literal, which every reader of doubles reads whole.
+inline bool is_decimal_literal(const std::string& token) {
+  std::size_t i = !token.empty() && (token[0] == '+' || token[0] == '-') ? 1 : 0;
+  auto digits = [&] {
+    const std::size_t start = i;
+    while (i < token.size() && std::isdigit(static_cast<unsigned char>(token[i])))
+      ++i;
+    return i - start;
+  };
+  std::size_t mantissa = digits();
+  if (i < token.size() && token[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0)
+    return false;
+  if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+    ++i;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-'))
+      ++i;
+    if (digits() == 0)
+      return false;
+  }
+  return i == token.size();
 }
 
 inline std::uint64_t header_count(const std::string& path, std::size_t line,
@@ -112,6 +139,7 @@ struct Off_keyword {
   std::size_t length = 1;     // of the keyword within the token
   std::string base;           // what follows the prefixes [ST][C][N][4][n]: CGAL wants OFF or SKEL
   bool n_dimensional = false; // nOFF: the dimension precedes the counts
+  bool homogeneous = false;   // 4OFF: x y z w, CGAL divides by w
 };
 
 // CGAL's OFF header computes twice the edge count in an int.
@@ -125,6 +153,7 @@ inline Off_keyword off_keyword(const std::string& token) {
   for (const char prefix : {'C', 'N', '4', 'n'})
     if (j < k.length && token[j] == prefix) {
       k.n_dimensional = prefix == 'n';
+      k.homogeneous = k.homogeneous || prefix == '4';
       ++j;
     }
   k.base = token.substr(j, k.length - j);
@@ -141,7 +170,7 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
   std::vector<std::string> header; // keyword and counts, over as many lines as they take
   std::size_t used = 0;            // tokens of the current line taken by the header
   std::size_t needed = 3;
-  bool n_dimensional = false;
+  bool n_dimensional = false, homogeneous = false;
   while (header.size() < needed) {
     if (!lines.next(tokens))
       return; // too short: CGAL's reader says so
@@ -156,6 +185,7 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
         if (keyword.length != t.size())
           fail_at(path, lines.line(), "invalid OFF keyword " + internal::quoted(t));
         n_dimensional = keyword.n_dimensional;
+        homogeneous = keyword.homogeneous;
         needed = n_dimensional ? 5 : 4;
       } else if (header.size() == 2 && needed >= 4 && t == "BINARY") {
         // CGAL skips the rest of the line; big-endian int32 counts [dimension] V F E follow.
@@ -203,11 +233,22 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
   std::uint64_t left = claim_bytes(path, at, file_bytes, file_bytes, V, 6, "vertices");
   claim_bytes(path, at, file_bytes, left, F, 2, "faces");
 
+  // CGAL divides x, y and z by w, asserting w != 0 (a debug build throws, not Invalid_input).
+  auto check_w = [&](std::uint64_t v, std::size_t first) {
+    const char* w = tokens.size() > first + 3 ? tokens[first + 3].c_str() : nullptr;
+    char* end = nullptr;
+    if (homogeneous && !n_dimensional && w != nullptr && std::strtod(w, &end) == 0 && end != w)
+      fail_at(path, lines.line(), "vertex " + std::to_string(v) + ": w = 0");
+  };
   // CGAL reads the rest of the counts' line as the first vertex line.
-  std::uint64_t vertex_lines = used < tokens.size() ? 1 : 0;
-  for (; vertex_lines < V; ++vertex_lines)
+  std::uint64_t vertex_lines = 0;
+  if (used < tokens.size())
+    check_w(vertex_lines++, used);
+  for (; vertex_lines < V; ++vertex_lines) {
     if (!lines.next(tokens))
       return;
+    check_w(vertex_lines, 0);
+  }
   for (std::uint64_t f = 0; f < F && lines.next(tokens); ++f) {
     const std::string face = "face " + std::to_string(f) + ": ";
     std::uint64_t n = 0;
@@ -418,6 +459,9 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
               return;
             if (p.value_integer && !is_integer_literal(*t))
               fail_at(path, lines.line(), where + internal::quoted(*t) + " is not an integer");
+            // CGAL reads "1.5-7" as 1.5 and then -7: one token, two values for it.
+            if (!p.value_integer && !is_decimal_literal(*t))
+              fail_at(path, lines.line(), where + internal::quoted(*t) + " is not a number");
           }
         }
     return;
