@@ -1062,6 +1062,9 @@ TYPED_TEST(MeshDomain, RejectsHeadersThatBypassTheChecks) {
   // CGAL divides by w after asserting w != 0 (a debug build threw Assertion_exception).
   const std::string w_zero = bad + "/homogeneous_zero.off";
   EXPECT_TRUE(throws_with(read(w_zero), {w_zero + ":3:", "vertex 0: w = 0"}));
+  // A header cut short, with numbers glued: CGAL reads 10^19 vertices from "3-10".
+  const std::string short_glued = bad + "/short_glued_header.off";
+  EXPECT_TRUE(throws_with(read(short_glued), {short_glued + ":2:", "invalid header count"}));
   const std::string homogeneous_ok =
       dir.write("h_ok.off", "4OFF\n3 1 0\n0 0 0 1\n2 0 0 2\n0 3 0 3\n3 0 1 2\n");
   EXPECT_EQ(TS::read_mesh_domain<K>(homogeneous_ok).first.number_of_faces(), 1u);
@@ -1086,6 +1089,9 @@ TYPED_TEST(MeshDomain, RejectsHeadersThatBypassTheChecks) {
   // 0x20202020 ints (2 GB) from the blanks that made it an empty ASCII body for the checks.
   const std::string format = bad + "/format_line.ply";
   EXPECT_TRUE(throws_with(read(format), {format + ": vertex 0, l: a list of 538976288 values"}));
+  // At the end of the file CGAL read a list length that was never written (4.7 GB).
+  const std::string short_ascii = bad + "/short_ascii_list.ply";
+  EXPECT_TRUE(throws_with(read(short_ascii), {short_ascii + ":6: vertex 0, l: the file ends"}));
   // CGAL reads "1.5-7" as the x 1.5 and then the list length -7.
   const std::string glued = bad + "/glued_number.ply";
   EXPECT_TRUE(throws_with(read(glued), {glued + ":7:", "\"1.5-7\" is not a number"}));

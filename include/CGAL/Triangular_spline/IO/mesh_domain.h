@@ -172,8 +172,12 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
   std::size_t needed = 3;
   bool n_dimensional = false, homogeneous = false;
   while (header.size() < needed) {
-    if (!lines.next(tokens))
-      return; // too short: CGAL's reader says so
+    if (!lines.next(tokens)) {
+      // Too short for CGAL's reader too, unless a token glues numbers ("3-10" is 3, -10).
+      for (std::size_t i = 1; needed > 3 && i < header.size(); ++i)
+        header_count(path, lines.line(), header[i], "header count");
+      return;
+    }
     for (used = 0; used < tokens.size() && header.size() < needed; ++used) {
       header.push_back(tokens[used]);
       const std::string& t = header.back();
@@ -444,8 +448,14 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
         for (const Ply_property& p : e.properties) {
           const std::string where = e.name + " " + std::to_string(i) + ", " + p.name + ": ";
           const std::string* t = token();
+          // At the end of the file CGAL's reader returns an uninitialised number (the
+          // stream's sentry fails before operator>> writes), a list's length included.
+          auto fail_short = [&] {
+            fail_at(path, lines.line(),
+                    where + "the file ends before the elements its header announces");
+          };
           if (t == nullptr)
-            return; // short file: CGAL's reader says so
+            fail_short();
           std::uint64_t values = 1;
           if (p.list && !parse_unsigned(*t, values))
             fail_at(path, lines.line(),
@@ -456,7 +466,7 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
                     where + "a list of " + *t + " values cannot fit in the file");
           for (std::uint64_t k = 0; k < (p.list ? values : 1); ++k) {
             if (p.list && (t = token()) == nullptr)
-              return;
+              fail_short();
             if (p.value_integer && !is_integer_literal(*t))
               fail_at(path, lines.line(), where + internal::quoted(*t) + " is not an integer");
             // CGAL reads "1.5-7" as 1.5 and then -7: one token, two values for it.
