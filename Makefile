@@ -5,7 +5,8 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 
 .DEFAULT_GOAL := build
-.PHONY: deps configure build demo test bench format doc pictures clean
+.PHONY: deps configure build demo test bench format doc pictures clean fuzz-deps fuzz-build fuzz \
+        fuzz-ci sanitize-configure sanitize
 
 deps:
 	@scripts/install_dependencies.sh
@@ -48,5 +49,47 @@ doc: deps
 	mkdir -p build/doc
 	doxygen doc/Doxyfile
 
+# libFuzzer harnesses of the readers (fuzz/), built with clang++ in a tree of their own: each
+# runs FUZZ_SECONDS on a corpus seeded from data/ and data/bad/; the target fails and names the
+# input if one finds a crash, a sanitizer report, a leak, a timeout or 2 GB of memory.
+FUZZ_BUILD_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_JOBS ?= 2
+
+fuzz-deps:
+	@scripts/install_dependencies.sh --fuzz
+
+$(FUZZ_BUILD_DIR)/CMakeCache.txt: | fuzz-deps
+	cmake -S fuzz -B $(FUZZ_BUILD_DIR) -DCMAKE_CXX_COMPILER=clang++ || { rm -f $@; exit 1; }
+
+fuzz-build: $(FUZZ_BUILD_DIR)/CMakeCache.txt
+	cmake --build $(FUZZ_BUILD_DIR) --target fuzzers -j $(FUZZ_JOBS)
+
+fuzz: fuzz-build
+	FUZZ_JOBS=$(FUZZ_JOBS) fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_SECONDS)
+
+# What CI runs after `make test`: 30 s per reader.
+fuzz-ci:
+	$(MAKE) fuzz FUZZ_SECONDS=30
+
+# The tests, examples and CLI with AddressSanitizer and UndefinedBehaviorSanitizer (g++);
+# any report fails its test. About an hour on two cores.
+SANITIZE_BUILD_DIR ?= build-sanitize
+SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=undefined \
+                  -fno-omit-frame-pointer -O1 -g
+
+# -DNDEBUG as in Release: the CLI is checked as it ships (tests and examples undefine it).
+$(SANITIZE_BUILD_DIR)/CMakeCache.txt: | deps
+	cmake -S . -B $(SANITIZE_BUILD_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$(SANITIZE_FLAGS) -DNDEBUG" \
+	  -DTRIANGULAR_SPLINE_BUILD_BENCHMARKS=OFF || { rm -f $@; exit 1; }
+
+sanitize-configure: $(SANITIZE_BUILD_DIR)/CMakeCache.txt
+
+sanitize: sanitize-configure
+	cmake --build $(SANITIZE_BUILD_DIR) -j $(JOBS)
+	cd $(SANITIZE_BUILD_DIR) && UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure -j $(JOBS) --no-tests=error
+
 clean:
-	rm -rf $(BUILD_DIR) out build/doc
+	rm -rf $(BUILD_DIR) out build/doc $(FUZZ_BUILD_DIR) $(SANITIZE_BUILD_DIR)

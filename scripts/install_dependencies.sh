@@ -1,10 +1,18 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages needed to build, test, benchmark and document
 # Triangular_spline. Prints nothing when everything is already installed.
+# With --fuzz, also clang and libFuzzer (`make fuzz`): libclang-rt-14-dev holds
+# libclang_rt.fuzzer and the sanitizer runtimes; clang only recommends it.
 set -euo pipefail
 
 packages=(cmake g++ make libcgal-dev libeigen3-dev libgtest-dev libbenchmark-dev libpng-dev
           doxygen clang-format)
+if [[ ${1:-} == --fuzz ]]; then
+  packages+=(clang libclang-rt-14-dev)
+elif [[ $# -gt 0 ]]; then
+  echo "usage: install_dependencies.sh [--fuzz]" >&2
+  exit 2
+fi
 
 missing=()
 for package in "${packages[@]}"; do

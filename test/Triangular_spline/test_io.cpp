@@ -1108,3 +1108,80 @@ TYPED_TEST(MeshDomain, RejectsFractionalAndLongIndices) {
     EXPECT_NE(std::string(e.what()).find("(1000000 characters)"), std::string::npos);
   }
 }
+
+// Issue 13, found by fuzz/ (libFuzzer): headers that CGAL's readers accept but read
+// differently from the checks, so that the checks were skipped and CGAL hit undefined
+// behaviour (a face size of 1e151 converted to std::size_t, an element that does not
+// exist, a null dereference in a release build).
+TYPED_TEST(MeshDomain, RejectsHeadersThatBypassTheChecks) {
+  using K = TypeParam;
+  Temporary_directory dir;
+  auto read = [](const std::string& path) { return [path] { TS::read_mesh_domain<K>(path); }; };
+  const std::string bad = TSPLINE_BAD_DATA_DIR;
+  // CGAL's keyword ends at the first character that is not a letter or digit.
+  const std::string mangled = bad + "/mangled_keyword.off";
+  EXPECT_TRUE(throws_with(read(mangled), {mangled + ":1:", "invalid OFF keyword \"OFF~\""}));
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  const std::string skel = dir.write("skel.off", "SKEL\n3 1\n" + vertices + "1e151 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(skel), {skel + ":1:", "SKEL"}));
+  // Homogeneous and n-dimensional OFF are checked like OFF (they were left to CGAL).
+  const std::string homogeneous =
+      dir.write("h.off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n1e151 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(homogeneous), {homogeneous + ":6:", "invalid vertex count"}));
+  const std::string n_dimensional =
+      dir.write("n.off", "nOFF\n3\n3 1 0\n" + vertices + "1e151 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(n_dimensional), {n_dimensional + ":7:", "invalid vertex count"}));
+  const std::string many = dir.write("many.off", "4OFF 3 2000000000 0\n" + vertices);
+  EXPECT_TRUE(throws_with(read(many), {many + ":1:", "announces 2000000000 faces"}));
+  // Numbers glued to the counts: CGAL reads "3-10" as the dimension 3 and 10^19 vertices,
+  // "0-1-2-3" as the edge count 0 and a first vertex, one line off from the checks.
+  const std::string glued_dimension = bad + "/glued_dimension.off";
+  EXPECT_TRUE(
+      throws_with(read(glued_dimension), {glued_dimension + ":3:", "invalid dimension \"3-10\""}));
+  const std::string glued_edges = bad + "/glued_edge_count.off";
+  EXPECT_TRUE(
+      throws_with(read(glued_edges), {glued_edges + ":2:", "invalid edge count \"0-1-2-3\""}));
+  // CGAL doubles the edge count in an int.
+  const std::string edges = bad + "/huge_edge_count.off";
+  EXPECT_TRUE(throws_with(read(edges), {edges + ":2:", "edge count \"2147483647\" is out of"}));
+  // CGAL divides by w after asserting w != 0 (a debug build threw Assertion_exception).
+  const std::string w_zero = bad + "/homogeneous_zero.off";
+  EXPECT_TRUE(throws_with(read(w_zero), {w_zero + ":3:", "vertex 0: w = 0"}));
+  // A header cut short, with numbers glued: CGAL reads 10^19 vertices from "3-10".
+  const std::string short_glued = bad + "/short_glued_header.off";
+  EXPECT_TRUE(throws_with(read(short_glued), {short_glued + ":2:", "invalid header count"}));
+  const std::string homogeneous_ok =
+      dir.write("h_ok.off", "4OFF\n3 1 0\n0 0 0 1\n2 0 0 2\n0 3 0 3\n3 0 1 2\n");
+  EXPECT_EQ(TS::read_mesh_domain<K>(homogeneous_ok).first.number_of_faces(), 1u);
+  // PLY: a property before any element, and integer coordinates.
+  const std::string before = bad + "/property_before_element.ply";
+  EXPECT_TRUE(throws_with(read(before), {before + ":3:", "property before the first element"}));
+  const std::string ply_line_1 =
+      dir.write("p.ply", "ply extra\nformat ascii 1.0\nproperty float x\n");
+  EXPECT_TRUE(throws_with(read(ply_line_1), {ply_line_1 + ":3:", "before the first element"}));
+  const std::string integer = bad + "/integer_coordinate.ply";
+  EXPECT_TRUE(throws_with(read(integer), {integer + ":5:", "coordinate \"y\" must be a float"}));
+  const std::string list = dir.write(
+      "list.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty list uchar float x\n");
+  EXPECT_TRUE(throws_with(read(list), {list + ":4:", "coordinate \"x\""}));
+  // CGAL takes the end of the file for the end of the header: 10^8 vertices from nothing.
+  const std::string no_end = bad + "/no_end_header.ply";
+  EXPECT_TRUE(throws_with(read(no_end), {no_end + ":3:", "no end_header"}));
+  // A binary list whose length lies past the end of the file: CGAL resized to garbage.
+  const std::string short_list = bad + "/short_binary_list.ply";
+  EXPECT_TRUE(throws_with(read(short_list), {short_list + ": vertex 1, l: the file ends"}));
+  // CGAL reads the format from line 2 whatever its first word: binary here, a list of
+  // 0x20202020 ints (2 GB) from the blanks that made it an empty ASCII body for the checks.
+  const std::string format = bad + "/format_line.ply";
+  EXPECT_TRUE(throws_with(read(format), {format + ": vertex 0, l: a list of 538976288 values"}));
+  // At the end of the file CGAL read a list length that was never written (4.7 GB).
+  const std::string short_ascii = bad + "/short_ascii_list.ply";
+  EXPECT_TRUE(throws_with(read(short_ascii), {short_ascii + ":6: vertex 0, l: the file ends"}));
+  // CGAL reads "1.5-7" as the x 1.5 and then the list length -7.
+  const std::string glued = bad + "/glued_number.ply";
+  EXPECT_TRUE(throws_with(read(glued), {glued + ":7:", "\"1.5-7\" is not a number"}));
+  // CGAL names a property by its third word: "property int y x" is the property y.
+  const std::string named =
+      dir.write("named.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty int y x\n");
+  EXPECT_TRUE(throws_with(read(named), {named + ":4:", "coordinate \"y\""}));
+}

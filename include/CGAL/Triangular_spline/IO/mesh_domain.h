@@ -16,6 +16,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -53,6 +54,32 @@ inline bool parse_unsigned(const std::string& token, std::uint64_t& value) {
 inline bool is_integer_literal(const std::string& token) {
   const std::size_t sign = !token.empty() && (token[0] == '+' || token[0] == '-') ? 1 : 0;
   return token.size() > sign && token.find_first_not_of("0123456789", sign) == std::string::npos;
+}
+
+// A decimal floating-point literal, which every reader of doubles reads whole.
+inline bool is_decimal_literal(const std::string& token) {
+  std::size_t i = !token.empty() && (token[0] == '+' || token[0] == '-') ? 1 : 0;
+  auto digits = [&] {
+    const std::size_t start = i;
+    while (i < token.size() && std::isdigit(static_cast<unsigned char>(token[i])))
+      ++i;
+    return i - start;
+  };
+  std::size_t mantissa = digits();
+  if (i < token.size() && token[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0)
+    return false;
+  if (i < token.size() && (token[i] == 'e' || token[i] == 'E')) {
+    ++i;
+    if (i < token.size() && (token[i] == '+' || token[i] == '-'))
+      ++i;
+    if (digits() == 0)
+      return false;
+  }
+  return i == token.size();
 }
 
 inline std::uint64_t header_count(const std::string& path, std::size_t line,
@@ -106,42 +133,88 @@ private:
   std::size_t m_line;
 };
 
-// OFF, as CGAL reads it: a header "[ST][C][N][4][n]OFF" (optional), the counts V F E, then
-// one vertex per line and one face "n i_1 ... i_n [colour]" per line.
+// The keyword of an OFF file as CGAL's File_header_OFF reads it: the first character and
+// the letters and digits after it, so "OFF~3" is the keyword OFF and then the count 3.
+struct Off_keyword {
+  std::size_t length = 1;     // of the keyword within the token
+  std::string base;           // what follows the prefixes [ST][C][N][4][n]: CGAL wants OFF or SKEL
+  bool n_dimensional = false; // nOFF: the dimension precedes the counts
+  bool homogeneous = false;   // 4OFF: x y z w, CGAL divides by w
+};
+
+// CGAL's OFF header computes twice the edge count in an int.
+constexpr std::uint64_t max_edge_count = 0x3fffffff;
+
+inline Off_keyword off_keyword(const std::string& token) {
+  Off_keyword k;
+  while (k.length < token.size() && std::isalnum(static_cast<unsigned char>(token[k.length])))
+    ++k.length;
+  std::size_t j = k.length >= 2 && token.compare(0, 2, "ST") == 0 ? 2 : 0;
+  for (const char prefix : {'C', 'N', '4', 'n'})
+    if (j < k.length && token[j] == prefix) {
+      k.n_dimensional = prefix == 'n';
+      k.homogeneous = k.homogeneous || prefix == '4';
+      ++j;
+    }
+  k.base = token.substr(j, k.length - j);
+  return k;
+}
+
+// OFF, as CGAL reads it: a header "[ST][C][N][4][n]OFF" (optional), the counts V F E (after
+// the dimension for nOFF), then one vertex per line and one face "n i_1 ... i_n [colour]"
+// per line. Every header CGAL accepts is checked: a keyword it would read differently from
+// us, or a skeleton (SKEL, read by the same scanner), is refused here.
 inline void check_off_file(const std::string& path, std::istream& input, std::uint64_t file_bytes) {
   Token_lines lines(input, true);
   std::vector<std::string> tokens;
   std::vector<std::string> header; // keyword and counts, over as many lines as they take
   std::size_t used = 0;            // tokens of the current line taken by the header
   std::size_t needed = 3;
+  bool n_dimensional = false, homogeneous = false;
   while (header.size() < needed) {
-    if (!lines.next(tokens))
-      return; // too short: CGAL's reader says so
+    if (!lines.next(tokens)) {
+      // Too short for CGAL's reader too, unless a token glues numbers ("3-10" is 3, -10).
+      for (std::size_t i = 1; needed > 3 && i < header.size(); ++i)
+        header_count(path, lines.line(), header[i], "header count");
+      return;
+    }
     for (used = 0; used < tokens.size() && header.size() < needed; ++used) {
       header.push_back(tokens[used]);
       const std::string& t = header.back();
-      if (header.size() == 1 && t.size() >= 3 && t.compare(t.size() - 3, 3, "OFF") == 0) {
-        if (t.find('4') != std::string::npos || t[0] == 'n')
-          return; // homogeneous or n-dimensional: not a height field; CGAL decides
-        needed = 4;
-      } else if (header.size() == 2 && needed == 4 && t == "BINARY") {
-        // CGAL skips the rest of the line; big-endian int32 counts V F E follow.
-        unsigned char b[8];
-        if (!input.read(reinterpret_cast<char*>(b), sizeof b))
+      const Off_keyword keyword = header.size() == 1 ? off_keyword(t) : Off_keyword();
+      if (keyword.base == "SKEL")
+        fail_at(path, lines.line(),
+                "SKEL (a skeleton of polylines) is not a supported mesh format");
+      if (keyword.base == "OFF") {
+        if (keyword.length != t.size())
+          fail_at(path, lines.line(), "invalid OFF keyword " + internal::quoted(t));
+        n_dimensional = keyword.n_dimensional;
+        homogeneous = keyword.homogeneous;
+        needed = n_dimensional ? 5 : 4;
+      } else if (header.size() == 2 && needed >= 4 && t == "BINARY") {
+        // CGAL skips the rest of the line; big-endian int32 counts [dimension] V F E follow.
+        unsigned char b[16];
+        const int first = n_dimensional ? 4 : 0;
+        if (!input.read(reinterpret_cast<char*>(b), first + 12))
           return;
         auto int32 = [&b](int k) {
           return static_cast<std::int32_t>(std::uint32_t(b[k]) << 24 |
                                            std::uint32_t(b[k + 1]) << 16 |
                                            std::uint32_t(b[k + 2]) << 8 | std::uint32_t(b[k + 3]));
         };
-        const std::int32_t V = int32(0), F = int32(4);
+        const std::int32_t V = int32(first), F = int32(first + 4), E = int32(first + 8);
         if (V < 0 || F < 0)
           fail_at(path, lines.line(),
                   "negative " + std::string(V < 0 ? "vertex" : "face") + " count " +
                       std::to_string(V < 0 ? V : F) + " in the binary header");
-        // A vertex is three float32, a face at least its size and its colour size (int32).
-        const std::uint64_t left = claim_bytes(path, lines.line(), file_bytes, file_bytes,
-                                               std::uint64_t(V), 12, "vertices");
+        if (E < 0 || std::uint64_t(E) > max_edge_count)
+          fail_at(path, lines.line(),
+                  "edge count " + std::to_string(E) + " in the binary header is out of range");
+        // A vertex is three float32 (one at least in n dimensions), a face at least its
+        // size and its colour size (int32).
+        const std::uint64_t left =
+            claim_bytes(path, lines.line(), file_bytes, file_bytes, std::uint64_t(V),
+                        n_dimensional ? 4 : 12, "vertices");
         claim_bytes(path, lines.line(), file_bytes, left, std::uint64_t(F), 8, "faces");
         return;
       }
@@ -152,15 +225,34 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
   const std::size_t at = lines.line();
   const std::uint64_t V = header_count(path, at, header[needed - 3], "vertex count");
   const std::uint64_t F = header_count(path, at, header[needed - 2], "face count");
+  // CGAL reads the header numbers with operator>>, which stops inside a token: "0-1-2-3"
+  // is the edge count 0 and then the vertex (-1, -2, -3). Plain counts keep its lines and
+  // ours the same.
+  // CGAL doubles the edge count in an int.
+  if (header_count(path, at, header[needed - 1], "edge count") > max_edge_count)
+    fail_at(path, at, "edge count " + internal::quoted(header[needed - 1]) + " is out of range");
+  if (n_dimensional)
+    header_count(path, at, header[1], "dimension");
   // A vertex line "x y z\n" takes at least 6 bytes, a face line "n\n" at least 2.
   std::uint64_t left = claim_bytes(path, at, file_bytes, file_bytes, V, 6, "vertices");
   claim_bytes(path, at, file_bytes, left, F, 2, "faces");
 
+  // CGAL divides x, y and z by w, asserting w != 0 (a debug build throws, not Invalid_input).
+  auto check_w = [&](std::uint64_t v, std::size_t first) {
+    const char* w = tokens.size() > first + 3 ? tokens[first + 3].c_str() : nullptr;
+    char* end = nullptr;
+    if (homogeneous && !n_dimensional && w != nullptr && std::strtod(w, &end) == 0 && end != w)
+      fail_at(path, lines.line(), "vertex " + std::to_string(v) + ": w = 0");
+  };
   // CGAL reads the rest of the counts' line as the first vertex line.
-  std::uint64_t vertex_lines = used < tokens.size() ? 1 : 0;
-  for (; vertex_lines < V; ++vertex_lines)
+  std::uint64_t vertex_lines = 0;
+  if (used < tokens.size())
+    check_w(vertex_lines++, used);
+  for (; vertex_lines < V; ++vertex_lines) {
     if (!lines.next(tokens))
       return;
+    check_w(vertex_lines, 0);
+  }
   for (std::uint64_t f = 0; f < F && lines.next(tokens); ++f) {
     const std::string face = "face " + std::to_string(f) + ": ";
     std::uint64_t n = 0;
@@ -269,21 +361,33 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
   bool ascii = true, big_endian = false;
   std::vector<Ply_element> elements;
   for (bool end = false; !end;) {
-    if (!std::getline(input, text))
-      return; // no end_header: CGAL's reader says so
+    if (!std::getline(input, text)) {
+      if (line == 0)
+        return; // empty: CGAL's reader says so
+      // CGAL's reader takes the end of the file for the end of the header, then reads as
+      // many elements as announced, from nothing (10^8 vertices: seconds, gigabytes).
+      fail_at(path, line, "the PLY header has no end_header line");
+    }
     const std::vector<std::string> tokens = split_tokens(text);
     ++line;
-    if (line == 1 && (tokens.size() != 1 || tokens[0] != "ply"))
-      return; // not a PLY file: CGAL's reader says so
+    if (line == 1 && (tokens.empty() || tokens[0] != "ply"))
+      return; // not a PLY file: CGAL's reader says so (it ignores what follows "ply")
     if (tokens.empty() || line == 1)
       continue;
-    if (tokens[0] == "format" && tokens.size() >= 2) {
+    if (line == 2) {
+      // CGAL takes the second line for the format line, whatever its first word, and
+      // ignores "format" on any other line.
+      if (tokens.size() < 3)
+        return; // CGAL's reader says so
       ascii = tokens[1] == "ascii";
       big_endian = tokens[1] == "binary_big_endian";
     } else if (tokens[0] == "element" && tokens.size() >= 3) {
       elements.push_back(
           {tokens[1], header_count(path, line, tokens[2], "element count"), line, {}});
-    } else if (tokens[0] == "property" && tokens.size() >= 3 && !elements.empty()) {
+    } else if (tokens[0] == "property" && elements.empty()) {
+      // CGAL's reader adds a property to the last element, here to none: undefined behaviour.
+      fail_at(path, line, "PLY property before the first element");
+    } else if (tokens[0] == "property" && tokens.size() >= 3) {
       Ply_property p;
       bool integer = false, is_signed = false;
       p.list = tokens[1] == "list";
@@ -297,7 +401,15 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
             (p.value_bytes = ply_type(tokens[3], p.value_integer, is_signed)) == 0)
           fail_at(path, line, "invalid PLY list property " + internal::quoted(text));
       }
-      p.name = tokens.back();
+      p.name = tokens[p.list ? 4 : 2]; // as CGAL reads it: what follows is ignored
+      // CGAL's point reader takes x, y and z as float or double, with no check in a
+      // release build (a null dereference).
+      const std::string& element = elements.back().name;
+      if ((element == "vertex" || element == "vertices") &&
+          (p.name == "x" || p.name == "y" || p.name == "z") && (p.list || integer))
+        fail_at(path, line,
+                "the vertex coordinate " + internal::quoted(p.name) +
+                    " must be a float or double property, not " + internal::quoted(text));
       elements.back().properties.push_back(p);
     } else if (tokens[0] == "end_header") {
       end = true;
@@ -336,8 +448,14 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
         for (const Ply_property& p : e.properties) {
           const std::string where = e.name + " " + std::to_string(i) + ", " + p.name + ": ";
           const std::string* t = token();
+          // At the end of the file CGAL's reader returns an uninitialised number (the
+          // stream's sentry fails before operator>> writes), a list's length included.
+          auto fail_short = [&] {
+            fail_at(path, lines.line(),
+                    where + "the file ends before the elements its header announces");
+          };
           if (t == nullptr)
-            return; // short file: CGAL's reader says so
+            fail_short();
           std::uint64_t values = 1;
           if (p.list && !parse_unsigned(*t, values))
             fail_at(path, lines.line(),
@@ -348,9 +466,12 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
                     where + "a list of " + *t + " values cannot fit in the file");
           for (std::uint64_t k = 0; k < (p.list ? values : 1); ++k) {
             if (p.list && (t = token()) == nullptr)
-              return;
+              fail_short();
             if (p.value_integer && !is_integer_literal(*t))
               fail_at(path, lines.line(), where + internal::quoted(*t) + " is not an integer");
+            // CGAL reads "1.5-7" as 1.5 and then -7: one token, two values for it.
+            if (!p.value_integer && !is_decimal_literal(*t))
+              fail_at(path, lines.line(), where + internal::quoted(*t) + " is not a number");
           }
         }
     return;
@@ -361,9 +482,12 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
     for (std::uint64_t i = 0; i < e.count; ++i)
       for (const Ply_property& p : e.properties) {
         unsigned char bytes[8] = {0};
+        // CGAL's reader would resize a list to a length read past the end of the file
+        // (uninitialised bytes), before it looks at the stream.
         if (left < static_cast<std::uint64_t>(p.size_bytes) ||
             !input.read(reinterpret_cast<char*>(bytes), p.size_bytes))
-          return; // short file: CGAL's reader says so
+          throw Invalid_input(path + ": " + e.name + " " + std::to_string(i) + ", " + p.name +
+                              ": the file ends before the elements its header announces");
         left -= static_cast<std::uint64_t>(p.size_bytes);
         if (!p.list)
           continue;
