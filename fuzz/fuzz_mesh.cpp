@@ -35,31 +35,9 @@ const std::string& input_path() {
   return path;
 }
 
-// Known and not fixed yet (fuzz/findings/README.md): CGAL's OFF scanner reads the colour
-// and texture entries of [ST]C...OFF files without bounds or range checks. Such inputs are
-// skipped, so that every run looks for new bugs, unless TSPLINE_FUZZ_OFF_COLOURS is set.
-// The keyword is read as CGAL does: after '#' comment lines, up to a blank.
-bool known_off_colour_issue(const std::uint8_t* data, std::size_t size) {
-  static const bool enabled = std::getenv("TSPLINE_FUZZ_OFF_COLOURS") == nullptr;
-  if (!enabled || std::string(tspline_fuzz_mesh_extension) != ".off")
-    return false;
-  std::size_t i = 0;
-  for (;;) {
-    while (i < size && std::isspace(data[i]))
-      ++i;
-    if (i == size || data[i] != '#')
-      break;
-    while (i < size && data[i] != '\n')
-      ++i;
-  }
-  return i < size && (data[i] == 'C' || (data[i] == 'S' && i + 1 < size && data[i + 1] == 'T'));
-}
-
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (known_off_colour_issue(data, size))
-    return -1; // libFuzzer: do not add this input to the corpus
   const std::string& path = input_path();
   {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);

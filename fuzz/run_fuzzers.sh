@@ -34,7 +34,10 @@ run() { # run FUZZER: one fuzzing session; its exit status goes to logs/FUZZER.s
   local status=0
   # A reader must refuse bad input with Invalid_input in well under a second, and never
   # need gigabytes: a 10 s input or 2 GB of memory is a finding.
-  "$build/$name" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -max_len=$max_len \
+  # FUZZ_SEED fixes libFuzzer's random choices (CI): a run then explores the same inputs
+  # on every machine, up to how many fit in the time.
+  "$build/$name" ${FUZZ_SEED:+-seed="$FUZZ_SEED"} -max_total_time="$seconds" -rss_limit_mb=2048 \
+    -timeout=10 -max_len=$max_len \
     -dict="$fuzz_dir/dict/$dict.dict" -artifact_prefix="$build/artifacts/$name/" \
     -print_final_stats=1 "$build/corpus/$name" >"$build/logs/$name.log" 2>&1 || status=$?
   echo $status >"$build/logs/$name.status"

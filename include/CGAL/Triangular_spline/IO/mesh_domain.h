@@ -140,6 +140,7 @@ struct Off_keyword {
   std::string base;           // what follows the prefixes [ST][C][N][4][n]: CGAL wants OFF or SKEL
   bool n_dimensional = false; // nOFF: the dimension precedes the counts
   bool homogeneous = false;   // 4OFF: x y z w, CGAL divides by w
+  bool decorated = false;     // ST (texture) or C (colour) prefix: refused
 };
 
 // CGAL's OFF header computes twice the edge count in an int.
@@ -150,8 +151,10 @@ inline Off_keyword off_keyword(const std::string& token) {
   while (k.length < token.size() && std::isalnum(static_cast<unsigned char>(token[k.length])))
     ++k.length;
   std::size_t j = k.length >= 2 && token.compare(0, 2, "ST") == 0 ? 2 : 0;
+  k.decorated = j == 2;
   for (const char prefix : {'C', 'N', '4', 'n'})
     if (j < k.length && token[j] == prefix) {
+      k.decorated = k.decorated || prefix == 'C';
       k.n_dimensional = prefix == 'n';
       k.homogeneous = k.homogeneous || prefix == '4';
       ++j;
@@ -188,6 +191,12 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
       if (keyword.base == "OFF") {
         if (keyword.length != t.size())
           fail_at(path, lines.line(), "invalid OFF keyword " + internal::quoted(t));
+        // CGAL 5.5 reads colour and texture entries without any check (heap overflows on
+        // fuzzed files); a height field needs neither.
+        if (keyword.decorated)
+          fail_at(path, lines.line(),
+                  internal::quoted(t) + ": OFF files with colours or textures (C, ST) are not "
+                                        "supported; write plain OFF");
         n_dimensional = keyword.n_dimensional;
         homogeneous = keyword.homogeneous;
         needed = n_dimensional ? 5 : 4;
@@ -264,6 +273,23 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
       fail_at(path, lines.line(),
               face + "announces " + std::to_string(n) + " vertices but lists " +
                   std::to_string(tokens.size() - 1));
+    // What follows the indices is a face colour to CGAL, read without checks: only none,
+    // a colour-map index 0..148, or 3-4 components all integers 0..255 or all in [0, 1].
+    const std::size_t colour = tokens.size() - 1 - n;
+    bool colour_ok = colour == 0 || colour == 1 || colour == 3 || colour == 4;
+    bool integers = true, unit = true;
+    for (std::size_t i = n + 1; i < tokens.size() && colour_ok; ++i) {
+      std::uint64_t c = 0;
+      const bool integer = parse_unsigned(tokens[i], c);
+      integers = integers && integer && c <= (colour == 1 ? 148u : 255u);
+      char* end = nullptr;
+      const double x = std::strtod(tokens[i].c_str(), &end);
+      unit = unit && end != tokens[i].c_str() && *end == '\0' && x >= 0 && x <= 1;
+    }
+    if (!colour_ok || (colour > 0 && !integers && (colour == 1 || !unit)))
+      fail_at(path, lines.line(),
+              face + "invalid face colour after the " + std::to_string(n) +
+                  " vertex indices (expected nothing, an index 0..148, or 3 or 4 components)");
     for (std::size_t i = 1; i <= n; ++i) {
       std::uint64_t v = 0;
       if (!parse_unsigned(tokens[i], v))
@@ -372,16 +398,39 @@ inline void check_ply_file(const std::string& path, std::istream& input, std::ui
     ++line;
     if (line == 1 && (tokens.empty() || tokens[0] != "ply"))
       return; // not a PLY file: CGAL's reader says so (it ignores what follows "ply")
-    if (tokens.empty() || line == 1)
+    // The header is read strictly: every line one of the standard forms, in printable
+    // ASCII. CGAL's reader is lenient in ways that differ from any imitation of it (fuzzing
+    // found a new difference per run); a header it could read otherwise is refused.
+    for (const char c : text)
+      if ((static_cast<unsigned char>(c) < 32 && c != '\t' && c != '\r') ||
+          static_cast<unsigned char>(c) > 126)
+        fail_at(path, line, "the PLY header holds a byte that is not printable ASCII");
+    const bool comment = !tokens.empty() && (tokens[0] == "comment" || tokens[0] == "obj_info");
+    const bool standard =
+        comment || (line == 1 && tokens.size() == 1) ||
+        (line == 2 && tokens.size() == 3 && tokens[0] == "format" &&
+         (tokens[1] == "ascii" || tokens[1] == "binary_little_endian" ||
+          tokens[1] == "binary_big_endian") &&
+         tokens[2] == "1.0") ||
+        (line > 2 && ((tokens.size() == 3 && (tokens[0] == "element" || tokens[0] == "property") &&
+                       tokens[1] != "list") ||
+                      (tokens.size() == 5 && tokens[0] == "property" && tokens[1] == "list") ||
+                      (tokens.size() == 1 && tokens[0] == "end_header")));
+    if (!standard)
+      fail_at(path, line,
+              "invalid PLY header line " + internal::quoted(text) +
+                  " (expected ply, format ascii|binary_little_endian|binary_big_endian 1.0, "
+                  "comment, element NAME COUNT, property TYPE NAME, property list TYPE TYPE "
+                  "NAME or end_header)");
+    if (line == 1 || comment)
       continue;
     if (line == 2) {
-      // CGAL takes the second line for the format line, whatever its first word, and
-      // ignores "format" on any other line.
-      if (tokens.size() < 3)
-        return; // CGAL's reader says so
       ascii = tokens[1] == "ascii";
       big_endian = tokens[1] == "binary_big_endian";
     } else if (tokens[0] == "element" && tokens.size() >= 3) {
+      for (const Ply_element& e : elements)
+        if (e.name == tokens[1])
+          fail_at(path, line, "PLY element " + internal::quoted(tokens[1]) + " declared twice");
       elements.push_back(
           {tokens[1], header_count(path, line, tokens[2], "element count"), line, {}});
     } else if (tokens[0] == "property" && elements.empty()) {
