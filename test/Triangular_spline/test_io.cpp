@@ -992,10 +992,14 @@ TYPED_TEST(MeshDomain, RejectsImpossibleCountsBeforeAllocating) {
         text += static_cast<char>((static_cast<std::uint32_t>(i) >> shift) & 0xff);
     return dir.write(name, text + std::string(48, '\0'));
   };
+  // (refused since altogether: CGAL read binary headers differently from every check)
   const std::string binary_faces = binary_off("binary_faces.off", 3, 2000000000);
-  EXPECT_TRUE(throws_with(read(binary_faces), {binary_faces + ":1:", "2000000000 faces"}));
+  EXPECT_TRUE(
+      throws_with(read(binary_faces), {binary_faces + ":1:", "binary OFF is not supported"}));
   const std::string binary_minus = binary_off("binary_minus.off", -3, 1);
-  EXPECT_TRUE(throws_with(read(binary_minus), {binary_minus + ":1:", "negative vertex count -3"}));
+  EXPECT_TRUE(throws_with(read(binary_minus), {binary_minus + ":1:", "binary OFF"}));
+  const std::string glued_binary = std::string(TSPLINE_BAD_DATA_DIR) + "/off_binary_glued.off";
+  EXPECT_TRUE(throws_with(read(glued_binary), {glued_binary + ":1:", "binary OFF"}));
   const std::string negative = std::string(TSPLINE_BAD_DATA_DIR) + "/negative_count.off";
   EXPECT_TRUE(throws_with(read(negative), {negative + ":2:", "invalid face count \"-1\""}));
   const std::string huge = std::string(TSPLINE_BAD_DATA_DIR) + "/huge_count.ply";
@@ -1141,6 +1145,11 @@ TYPED_TEST(MeshDomain, RefusesColouredOffAndNonStandardPlyHeaders) {
         dir.write("c.off", "OFF\n3 1 0\n" + vertices + "3 0 1 2" + colour + "\n");
     EXPECT_EQ(TS::read_mesh_domain<K>(off).first.number_of_faces(), 1u);
   }
+  // CI's fuzzing: the rest of the counts' line is a face to CGAL when there is no vertex.
+  const std::string counts_line = bad + "/off_face_on_counts_line.off";
+  EXPECT_TRUE(throws_with(read(counts_line), {counts_line + ":3:", "values after the counts"}));
+  const std::string no_vertex = dir.write("nv.off", "OFF\n0 1 0\n3 0 1 2\n");
+  EXPECT_TRUE(throws_with(read(no_vertex), {no_vertex + ":2:", "no vertex"}));
   const std::string timeout = bad + "/ply_timeout.ply";
   EXPECT_TRUE(throws_with(read(timeout), {timeout + ":4:", "not printable ASCII"}));
   const std::string body = "element vertex 3\nproperty float x\nproperty float y\n"

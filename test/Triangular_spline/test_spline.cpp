@@ -344,17 +344,18 @@ TEST(Certificate, OnlyExactZerosMakeAProof) {
 }
 
 // Issue 13, defect 9: the rational rank never finished on 100 scattered decimal points;
-// the modular bound does in milliseconds and meets the free count, which proves the
-// dimension. It is an upper bound: a C^1 condition it misses shows as a larger bound.
+// the modular bound meets the free count, which proves the dimension, in linear time (2000
+// points: 0.2 s; with the columns grouped by kind instead of by vertex, over a minute). It
+// is an upper bound: a C^1 condition it misses shows as a larger bound.
 TEST(Spline, ModularRankProvesTheDimensionOnScatteredPoints) {
-  const std::vector<Epick::Point_2> points = random_square_points(100, 5);
+  const std::vector<Epick::Point_2> points = random_square_points(2000, 5);
   CGAL::Delaunay_triangulation_2<Epick> dt(points.begin(), points.end());
   std::vector<CGAL::Delaunay_triangulation_2<Epick>::Vertex_handle> handles;
   const Planar_domain<Epick> domain = TS::domain_from_triangulation_2<Epick>(
       dt, [](auto) { return true; }, handles);
   const auto start = std::chrono::steady_clock::now();
   const TS::Dimension_bound bound = TS::spline_dimension_upper_bound(domain);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
   EXPECT_EQ(bound.upper_bound, C1_quintic_spline<Epick>(domain).number_of_free_parameters());
   EXPECT_EQ(bound.prime, 2147483629u);
   if (const auto ms = TS::morgan_scott_dimension(domain)) {

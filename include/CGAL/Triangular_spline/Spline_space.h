@@ -267,31 +267,60 @@ struct Dimension_bound {
   assignment of the scheme's free values is a C^1 spline, distinct assignments give
   distinct splines, so \f$\dim S^1_5 \ge\f$ `free_parameter_count()`, and an upper bound
   equal to that count proves both equal. Linear in practice: the elimination runs in
-  machine integers (milliseconds for 10^4 triangles), where the rational one grows.
+  machine integers, with columns ordered by the vertex each slot belongs to so that the
+  fill-in stays near the diagonal (measured on random points: 0.11 s for 10^3, 1.1 s for
+  10^4, 12 s for 10^5; grouping the columns by kind instead took 11 s for 10^3 and 265 s
+  for 3000).
 */
 template <class GeomTraits>
 Dimension_bound spline_dimension_upper_bound(const Planar_domain<GeomTraits>& input) {
   using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
   const Planar_domain<Exact> domain = convert_domain<Exact>(input);
+  using Index = typename Planar_domain<Exact>::Index;
+  // Columns in the order of the vertex each slot belongs to (an edge's or a face's smallest
+  // vertex): with spatially numbered vertices the matrix is nearly banded, and the
+  // elimination's fill-in stays near the diagonal (slots grouped by kind, vertices first,
+  // filled it far more: 1000 points took 11 s).
+  const std::size_t V = domain.number_of_vertices(), E = domain.number_of_edges();
+  const std::size_t slots = internal::c1_slot_count(domain);
+  std::vector<std::uint32_t> column(slots);
+  {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(slots);
+    for (std::size_t s = 0; s < slots; ++s) {
+      std::uint64_t owner;
+      if (s < V)
+        owner = s;
+      else if (s < V + 4 * E)
+        owner = domain.edge(Index((s - V) / 4))[0]; // the smaller index first
+      else {
+        const auto& t = domain.face(Index((s - V - 4 * E) / 6));
+        owner = (std::min)({t[0], t[1], t[2]});
+      }
+      keys[s] = {owner * slots + s, std::uint32_t(s)};
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 0; i < slots; ++i)
+      column[keys[i].second] = std::uint32_t(i);
+  }
   // Primes just below 2^31: the first that divides no denominator is used.
   for (std::uint64_t prime : {2147483629ull, 2147483587ull, 2147483579ull, 2147483563ull}) {
     const internal::Modular_field field(prime);
-    const std::size_t slots = internal::c1_slot_count(domain);
     internal::Sparse_rank<std::uint64_t, internal::Modular_field> rank(slots, field);
     bool reducible = true;
     internal::for_each_c1_condition(domain, [&](const auto& row) {
       if (!reducible)
         return;
       internal::Sparse_rank<std::uint64_t, internal::Modular_field>::Row reduced;
-      for (const auto& [column, value] : row) {
+      for (const auto& [c, value] : row) {
         std::uint64_t v = 0;
         if (!field.reduce(value, v)) {
           reducible = false;
           return;
         }
         if (v != 0)
-          reduced.emplace_back(column, v);
+          reduced.emplace_back(column[c], v);
       }
+      std::sort(reduced.begin(), reduced.end());
       rank.add(std::move(reduced));
     });
     if (reducible)
