@@ -5,14 +5,14 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
-#include <CGAL/Triangular_spline/Continuity_adjustment.h>
-#include <CGAL/Triangular_spline/Domain_locator.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Mann/Continuity_adjustment.h>
+#include <CGAL/Triangular_spline/Domain/Domain_locator.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/certify.h>
 #include <CGAL/Triangular_spline/evaluate.h>
-#include <CGAL/Triangular_spline/mann_interpolant.h>
-#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/Mann/mann_interpolant.h>
+#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 
 #include <benchmark/benchmark.h>
 

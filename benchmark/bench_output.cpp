@@ -4,8 +4,8 @@
 // rates of point location and of evaluation at query points.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Triangular_spline/Domain_locator.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Domain_locator.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Polynomial_surface.h>
 #include <CGAL/Triangular_spline/evaluate.h>
 #include <CGAL/Triangular_spline/tessellate.h>

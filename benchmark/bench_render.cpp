@@ -8,9 +8,9 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
-#include <CGAL/Triangular_spline/IO/demo_data.h>
-#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Domain/demo_data.h>
+#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 
 #include <benchmark/benchmark.h>

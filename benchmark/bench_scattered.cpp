@@ -2,9 +2,9 @@
 // timed separately, on points from a 64-bit LCG that benchmark/compare_scipy.py reproduces
 // exactly, so scipy's CloughTocher2DInterpolator is timed on the same points.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
-#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 
 #include <benchmark/benchmark.h>
 

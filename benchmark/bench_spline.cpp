@@ -3,9 +3,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/certify.h>
-#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 
 #include <benchmark/benchmark.h>
 

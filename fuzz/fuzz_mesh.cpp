@@ -3,7 +3,7 @@
 // tspline_fuzz_mesh_extension (see CMakeLists.txt). Invalid_input is the expected outcome
 // of bad input.
 
-#include <CGAL/Triangular_spline/IO/mesh_domain.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 

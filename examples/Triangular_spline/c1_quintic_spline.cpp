@@ -5,12 +5,13 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
-#include <CGAL/Triangular_spline/Spline_space.h>
+#include <CGAL/Triangular_spline/Xu/Spline_space.h>
 #include <CGAL/Triangular_spline/certify.h>
-#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 #include <CGAL/Triangular_spline/tessellate.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
 
 #include <cstdlib>
 #include <fstream>

@@ -4,10 +4,10 @@
 // C^1, all in exact rational arithmetic.
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Triangular_spline/Continuity_adjustment.h>
+#include <CGAL/Triangular_spline/Mann/Continuity_adjustment.h>
 #include <CGAL/Triangular_spline/Polynomial_surface.h>
 #include <CGAL/Triangular_spline/certify.h>
-#include <CGAL/Triangular_spline/mann_interpolant.h>
+#include <CGAL/Triangular_spline/Mann/mann_interpolant.h>
 
 #include <cstdlib>
 #include <iostream>

@@ -5,11 +5,11 @@
 // printed jet equals the cubic's, and the program checks it.
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
-#include <CGAL/Triangular_spline/Domain_locator.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Domain/Domain_locator.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/evaluate.h>
-#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 
 #include <cstdlib>
 #include <iostream>

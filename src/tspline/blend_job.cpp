@@ -13,7 +13,7 @@
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
 #include <CGAL/Triangular_spline/Blending/blending_continuity.h>
 #include <CGAL/Triangular_spline/Blending/test_meshes.h>
-#include <CGAL/Triangular_spline/IO/mesh_domain.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 
 #include <algorithm>

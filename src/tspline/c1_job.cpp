@@ -9,17 +9,17 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
-#include <CGAL/Triangular_spline/Domain_locator.h>
-#include <CGAL/Triangular_spline/IO/demo_data.h>
-#include <CGAL/Triangular_spline/IO/mesh_domain.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Domain/Domain_locator.h>
+#include <CGAL/Triangular_spline/Domain/demo_data.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
-#include <CGAL/Triangular_spline/Spline_space.h>
+#include <CGAL/Triangular_spline/Xu/Spline_space.h>
 #include <CGAL/Triangular_spline/certify.h>
 #include <CGAL/Triangular_spline/evaluate.h>
-#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 
 #include <chrono>

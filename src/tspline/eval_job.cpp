@@ -8,11 +8,11 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Triangular_spline/Domain_locator.h>
+#include <CGAL/Triangular_spline/Domain/Domain_locator.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
-#include <CGAL/Triangular_spline/IO/text_tokens.h>
+#include <CGAL/Triangular_spline/internal/text.h>
 #include <CGAL/Triangular_spline/evaluate.h>
 
 #include <algorithm>

@@ -9,12 +9,12 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Triangular_spline/Continuity_adjustment.h>
-#include <CGAL/Triangular_spline/IO/mesh_domain.h>
+#include <CGAL/Triangular_spline/Mann/Continuity_adjustment.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
 #include <CGAL/Triangular_spline/certify.h>
-#include <CGAL/Triangular_spline/mann_interpolant.h>
+#include <CGAL/Triangular_spline/Mann/mann_interpolant.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 
 #include <algorithm>

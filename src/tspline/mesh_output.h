@@ -9,6 +9,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangular_spline/tessellate.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
 
 #include <string>
 

@@ -11,8 +11,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh/IO/PLY.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
-#include <CGAL/Triangular_spline/IO/mesh_domain.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 

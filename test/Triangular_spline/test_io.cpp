@@ -5,9 +5,9 @@
 
 #include "test_support.h"
 
-#include <CGAL/Triangular_spline/IO/constrained_domain.h>
-#include <CGAL/Triangular_spline/IO/demo_data.h>
-#include <CGAL/Triangular_spline/IO/mesh_domain.h>
+#include <CGAL/Triangular_spline/Domain/constrained_domain.h>
+#include <CGAL/Triangular_spline/Domain/demo_data.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>

@@ -4,10 +4,11 @@
 #include "test_support.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
-#include <CGAL/Triangular_spline/Continuity_adjustment.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Mann/Continuity_adjustment.h>
 #include <CGAL/Triangular_spline/certify.h>
-#include <CGAL/Triangular_spline/mann_interpolant.h>
+#include <CGAL/Triangular_spline/Mann/mann_interpolant.h>
+#include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
 
 #include <cmath>
 #include <string>

@@ -8,12 +8,14 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
-#include <CGAL/Triangular_spline/Domain_locator.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Domain/Domain_locator.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/evaluate.h>
-#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 #include <CGAL/Triangular_spline/tessellate.h>
+#include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <cmath>

@@ -5,14 +5,15 @@
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Triangular_spline/domain_from_face_graph.h>
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
-#include <CGAL/Triangular_spline/Domain_locator.h>
+#include <CGAL/Triangular_spline/Domain/domain_from_face_graph.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Domain/Domain_locator.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
-#include <CGAL/Triangular_spline/Spline_space.h>
+#include <CGAL/Triangular_spline/Xu/Spline_space.h>
 #include <CGAL/Triangular_spline/certify.h>
 #include <CGAL/Triangular_spline/evaluate.h>
-#include <CGAL/Triangular_spline/shape.h>
+#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
+#include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
 
 #include <algorithm>
 #include <chrono>

@@ -7,6 +7,7 @@
 #include <CGAL/Triangular_spline/Multi_index.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/text.h>
 
 #include <CGAL/Cartesian_converter.h>
 #include <CGAL/number_utils.h>
@@ -23,14 +24,6 @@ namespace CGAL {
 namespace Triangular_spline {
 
 namespace internal {
-
-template <class Point_2>
-std::string point_to_string(const Point_2& p) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "(" << CGAL::to_double(p.x()) << ", " << CGAL::to_double(p.y()) << ")";
-  return out.str();
-}
 
 // Scratch nets live on the stack up to degree 6 (28 values): evaluation is the hot path of
 // tessellation and certification, and a heap allocation per call would dominate it.

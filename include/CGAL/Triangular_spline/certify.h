@@ -4,7 +4,7 @@
 #ifndef CGAL_TRIANGULAR_SPLINE_CERTIFY_H
 #define CGAL_TRIANGULAR_SPLINE_CERTIFY_H
 
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/continuity.h>
 
 #include <algorithm>

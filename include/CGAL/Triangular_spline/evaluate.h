@@ -5,8 +5,8 @@
 #define CGAL_TRIANGULAR_SPLINE_EVALUATE_H
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
-#include <CGAL/Triangular_spline/Domain_locator.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Domain_locator.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
 
 #include <CGAL/assertions.h>

@@ -5,7 +5,7 @@
 #define CGAL_TRIANGULAR_SPLINE_TESSELLATE_H
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/differential_geometry.h>
 #include <CGAL/Triangular_spline/evaluate.h>
@@ -14,18 +14,14 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/assertions.h>
-#include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <limits>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -321,62 +317,6 @@ Tessellation_statistics tessellate(const Planar_domain<GeomTraits>& domain, Patc
   statistics.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return statistics;
-}
-
-/*!
-  \ingroup PkgTriangularSplineSplines
-  \brief writes a surface mesh to a file, the format chosen by the extension of `path`
-  (letter case ignored):
-
-  - `.ply`: binary little-endian PLY with the vertex normals `"v:normal"` (`nx ny nz`) and
-    every other vertex property of a simple type, such as the curvatures written by
-    `tessellate()` (CGAL's `Surface_mesh` PLY writer);
-  - `.off`: ASCII OFF, as `NOFF` with normals when `"v:normal"` exists, 17 digits;
-  - `.obj`: ASCII Wavefront OBJ, with `vn` lines (one per vertex, in vertex order) when
-    `"v:normal"` exists, 17 digits.
-
-  \tparam Point the point type of the mesh (a CGAL 3D point)
-  \throws Invalid_input if the extension is not one of the above
-  \throws std::runtime_error (naming `path`) if the file cannot be opened or written
-*/
-template <class Point>
-void write_mesh(const std::string& path, const CGAL::Surface_mesh<Point>& mesh) {
-  using Mesh = CGAL::Surface_mesh<Point>;
-  using Vector_3 = typename CGAL::Kernel_traits<Point>::Kernel::Vector_3;
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of("/\\");
-  std::string extension;
-  if (dot != std::string::npos && (slash == std::string::npos || dot > slash))
-    extension = path.substr(dot + 1);
-  for (char& c : extension)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != "ply" && extension != "off" && extension != "obj")
-    throw Invalid_input("write_mesh: cannot choose a format for '" + path +
-                        "' (use the extension .ply, .off or .obj)");
-
-  std::ofstream out(path, extension == "ply" ? std::ios::out | std::ios::binary : std::ios::out);
-  if (!out)
-    throw std::runtime_error("write_mesh: cannot open '" + path + "' for writing");
-  bool written = false;
-  if (extension == "ply") {
-    CGAL::IO::set_mode(out, CGAL::IO::BINARY);
-    written = CGAL::IO::write_PLY(out, mesh);
-  } else if (extension == "off") {
-    written = CGAL::IO::write_OFF(out, mesh, CGAL::parameters::stream_precision(17));
-  } else {
-    // CGAL's OBJ writer has no Surface_mesh overload: normals only through the parameter.
-    const auto [normals, has_normals] =
-        mesh.template property_map<typename Mesh::Vertex_index, Vector_3>("v:normal");
-    if (has_normals)
-      written = CGAL::IO::write_OBJ(
-          out, mesh, CGAL::parameters::stream_precision(17).vertex_normal_map(normals));
-    else
-      written = CGAL::IO::write_OBJ(out, mesh, CGAL::parameters::stream_precision(17));
-  }
-  out.close();
-  // The PLY writer reports success without checking the stream: check it here.
-  if (!written || out.fail())
-    throw std::runtime_error("write_mesh: writing '" + path + "' failed");
 }
 
 } // namespace Triangular_spline

@@ -4,7 +4,7 @@
 #ifndef CGAL_TRIANGULAR_SPLINE_IO_NUMBER_PARSING_H
 #define CGAL_TRIANGULAR_SPLINE_IO_NUMBER_PARSING_H
 
-#include <CGAL/Triangular_spline/IO/text_tokens.h>
+#include <CGAL/Triangular_spline/internal/text.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
 #include <CGAL/Algebraic_structure_traits.h>

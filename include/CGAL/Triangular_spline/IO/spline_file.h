@@ -6,9 +6,9 @@
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
-#include <CGAL/Triangular_spline/IO/text_tokens.h>
+#include <CGAL/Triangular_spline/internal/text.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 

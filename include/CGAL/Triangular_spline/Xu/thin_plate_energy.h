@@ -1,8 +1,8 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_THIN_PLATE_ENERGY_H
-#define CGAL_TRIANGULAR_SPLINE_THIN_PLATE_ENERGY_H
+#ifndef CGAL_TRIANGULAR_SPLINE_XU_THIN_PLATE_ENERGY_H
+#define CGAL_TRIANGULAR_SPLINE_XU_THIN_PLATE_ENERGY_H
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
@@ -220,4 +220,4 @@ typename GeomTraits::FT thin_plate_energy(const Bezier_triangle<GeomTraits>& pat
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_THIN_PLATE_ENERGY_H
+#endif // CGAL_TRIANGULAR_SPLINE_XU_THIN_PLATE_ENERGY_H

@@ -1,13 +1,13 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_C1_QUINTIC_SPLINE_H
-#define CGAL_TRIANGULAR_SPLINE_C1_QUINTIC_SPLINE_H
+#ifndef CGAL_TRIANGULAR_SPLINE_XU_C1_QUINTIC_SPLINE_H
+#define CGAL_TRIANGULAR_SPLINE_XU_C1_QUINTIC_SPLINE_H
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
-#include <CGAL/Triangular_spline/degenerate_frames.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
+#include <CGAL/Triangular_spline/Xu/degenerate_frames.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
@@ -1019,4 +1019,4 @@ private:
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_C1_QUINTIC_SPLINE_H
+#endif // CGAL_TRIANGULAR_SPLINE_XU_C1_QUINTIC_SPLINE_H

@@ -1,16 +1,14 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_PLANAR_DOMAIN_H
-#define CGAL_TRIANGULAR_SPLINE_PLANAR_DOMAIN_H
+#ifndef CGAL_TRIANGULAR_SPLINE_DOMAIN_PLANAR_DOMAIN_H
+#define CGAL_TRIANGULAR_SPLINE_DOMAIN_PLANAR_DOMAIN_H
 
-#include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/text.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Cartesian_converter.h>
-#include <CGAL/Unique_hash_map.h>
-#include <CGAL/hilbert_sort.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/number_utils.h>
 
@@ -547,83 +545,7 @@ Planar_domain<K2> convert_domain(const Planar_domain<K1>& domain) {
   return Planar_domain<K2>(std::move(points), domain.faces());
 }
 
-namespace internal {
-
-// Hilbert sorting of (point, handle) pairs with ties broken by the other coordinate: a strict
-// total order on distinct points, so the numbering does not depend on the input order.
-template <class GeomTraits, class Handle>
-struct Lexicographic_hilbert_traits {
-  using Point_2 = std::pair<typename GeomTraits::Point_2, Handle>;
-  struct Less_x_2 {
-    bool operator()(const Point_2& a, const Point_2& b) const {
-      return GeomTraits().compare_xy_2_object()(a.first, b.first) == CGAL::SMALLER;
-    }
-  };
-  struct Less_y_2 {
-    bool operator()(const Point_2& a, const Point_2& b) const {
-      return GeomTraits().compare_yx_2_object()(a.first, b.first) == CGAL::SMALLER;
-    }
-  };
-  Less_x_2 less_x_2_object() const { return Less_x_2(); }
-  Less_y_2 less_y_2_object() const { return Less_y_2(); }
-};
-
-} // namespace internal
-
-/*!
-  \ingroup PkgTriangularSplineSplines
-  \brief returns the domain made of the finite faces of a CGAL 2D triangulation for which
-  `in_domain(face_handle)` is `true` (e.g. the faces inside a constrained triangulation's
-  polygon, marked by nesting level), and writes into `vertex_map` the triangulation vertex
-  handle of each domain vertex.
-  \tparam Triangulation a `CGAL::Triangulation_2` (Delaunay, constrained, ...) whose
-  points are `GeomTraits::Point_2`
-*/
-template <class GeomTraits, class Triangulation, class InDomain, class VertexHandles>
-Planar_domain<GeomTraits> domain_from_triangulation_2(const Triangulation& triangulation,
-                                                      const InDomain& in_domain,
-                                                      VertexHandles& vertex_map) {
-  using Index = typename Planar_domain<GeomTraits>::Index;
-  using Vertex_handle = typename Triangulation::Vertex_handle;
-  constexpr Index none = Planar_domain<GeomTraits>::null_index;
-  using Point_2 = typename GeomTraits::Point_2;
-  // Vertices are numbered along a Hilbert curve: neighbours get near indices, which keeps
-  // every later pass over the domain cache-friendly. A hash map by handle, not a std::map.
-  CGAL::Unique_hash_map<Vertex_handle, Index> index(none, triangulation.number_of_vertices());
-  std::vector<std::pair<Point_2, Vertex_handle>> used;
-  for (auto f : triangulation.finite_face_handles())
-    if (in_domain(f))
-      for (int i = 0; i < 3; ++i)
-        if (index[f->vertex(i)] == none) {
-          index[f->vertex(i)] = 0;
-          used.emplace_back(f->vertex(i)->point(), f->vertex(i));
-        }
-  CGAL::hilbert_sort(used.begin(), used.end(),
-                     internal::Lexicographic_hilbert_traits<GeomTraits, Vertex_handle>(),
-                     CGAL::Hilbert_sort_median_policy());
-  std::vector<Point_2> points;
-  points.reserve(used.size());
-  vertex_map.clear();
-  for (const auto& [point, v] : used) {
-    index[v] = static_cast<Index>(points.size());
-    points.push_back(point);
-    vertex_map.push_back(v);
-  }
-  std::vector<std::array<Index, 3>> triangles;
-  for (auto f : triangulation.finite_face_handles())
-    if (in_domain(f))
-      triangles.push_back({index[f->vertex(0)], index[f->vertex(1)], index[f->vertex(2)]});
-  // Each face starts at its smallest vertex (the triangulation's rotation depends on the
-  // insertion order), and faces are sorted: near faces get near indices too, and the order
-  // is total (distinct faces differ as rotated triples), the same for every input order.
-  for (auto& t : triangles)
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-  std::sort(triangles.begin(), triangles.end());
-  // A triangulation's faces are embedded: no overlap test needed.
-  return Planar_domain<GeomTraits>(std::move(points), std::move(triangles), GeomTraits(), false);
-}
-
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_PLANAR_DOMAIN_H
+#endif // CGAL_TRIANGULAR_SPLINE_DOMAIN_PLANAR_DOMAIN_H

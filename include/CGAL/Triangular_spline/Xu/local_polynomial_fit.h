@@ -1,10 +1,10 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_LOCAL_POLYNOMIAL_FIT_H
-#define CGAL_TRIANGULAR_SPLINE_LOCAL_POLYNOMIAL_FIT_H
+#ifndef CGAL_TRIANGULAR_SPLINE_XU_LOCAL_POLYNOMIAL_FIT_H
+#define CGAL_TRIANGULAR_SPLINE_XU_LOCAL_POLYNOMIAL_FIT_H
 
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
@@ -507,4 +507,4 @@ private:
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_LOCAL_POLYNOMIAL_FIT_H
+#endif // CGAL_TRIANGULAR_SPLINE_XU_LOCAL_POLYNOMIAL_FIT_H

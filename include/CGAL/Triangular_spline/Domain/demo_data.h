@@ -1,11 +1,11 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_IO_DEMO_DATA_H
-#define CGAL_TRIANGULAR_SPLINE_IO_DEMO_DATA_H
+#ifndef CGAL_TRIANGULAR_SPLINE_DOMAIN_DEMO_DATA_H
+#define CGAL_TRIANGULAR_SPLINE_DOMAIN_DEMO_DATA_H
 
-#include <CGAL/Triangular_spline/IO/constrained_domain.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/constrained_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 
 #include <array>
 #include <cstdlib>
@@ -93,4 +93,4 @@ std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>> demo_
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_IO_DEMO_DATA_H
+#endif // CGAL_TRIANGULAR_SPLINE_DOMAIN_DEMO_DATA_H

@@ -1,13 +1,13 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_SHAPE_H
-#define CGAL_TRIANGULAR_SPLINE_SHAPE_H
+#ifndef CGAL_TRIANGULAR_SPLINE_XU_FIT_VERTEX_DATA_H
+#define CGAL_TRIANGULAR_SPLINE_XU_FIT_VERTEX_DATA_H
 
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/exceptions.h>
-#include <CGAL/Triangular_spline/local_polynomial_fit.h>
-#include <CGAL/Triangular_spline/thin_plate_energy.h>
+#include <CGAL/Triangular_spline/Xu/local_polynomial_fit.h>
+#include <CGAL/Triangular_spline/Xu/thin_plate_energy.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -658,4 +658,4 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_SHAPE_H
+#endif // CGAL_TRIANGULAR_SPLINE_XU_FIT_VERTEX_DATA_H

@@ -1,12 +1,12 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_SPLINE_SPACE_H
-#define CGAL_TRIANGULAR_SPLINE_SPLINE_SPACE_H
+#ifndef CGAL_TRIANGULAR_SPLINE_XU_SPLINE_SPACE_H
+#define CGAL_TRIANGULAR_SPLINE_XU_SPLINE_SPACE_H
 
-#include <CGAL/Triangular_spline/C1_quintic_spline.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
-#include <CGAL/Triangular_spline/degenerate_frames.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
+#include <CGAL/Triangular_spline/Xu/degenerate_frames.h>
 
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Fraction_traits.h>
@@ -333,4 +333,4 @@ Dimension_bound spline_dimension_upper_bound(const Planar_domain<GeomTraits>& in
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_SPLINE_SPACE_H
+#endif // CGAL_TRIANGULAR_SPLINE_XU_SPLINE_SPACE_H

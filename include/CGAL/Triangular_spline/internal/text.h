@@ -1,10 +1,13 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_IO_TEXT_TOKENS_H
-#define CGAL_TRIANGULAR_SPLINE_IO_TEXT_TOKENS_H
+#ifndef CGAL_TRIANGULAR_SPLINE_INTERNAL_TEXT_H
+#define CGAL_TRIANGULAR_SPLINE_INTERNAL_TEXT_H
+
+#include <CGAL/number_utils.h>
 
 #include <cstddef>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -49,8 +52,17 @@ inline std::string quoted(const std::string& token) {
          " characters)";
 }
 
+// A point for error messages, in double with 17 digits.
+template <class Point_2>
+std::string point_to_string(const Point_2& p) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "(" << CGAL::to_double(p.x()) << ", " << CGAL::to_double(p.y()) << ")";
+  return out.str();
+}
+
 } // namespace internal
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_IO_TEXT_TOKENS_H
+#endif // CGAL_TRIANGULAR_SPLINE_INTERNAL_TEXT_H

@@ -1,13 +1,13 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_MANN_INTERPOLANT_H
-#define CGAL_TRIANGULAR_SPLINE_MANN_INTERPOLANT_H
+#ifndef CGAL_TRIANGULAR_SPLINE_MANN_MANN_INTERPOLANT_H
+#define CGAL_TRIANGULAR_SPLINE_MANN_MANN_INTERPOLANT_H
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
-#include <CGAL/Triangular_spline/Continuity_adjustment.h>
+#include <CGAL/Triangular_spline/Mann/Continuity_adjustment.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Polynomial_surface.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
@@ -464,4 +464,4 @@ estimate_vertex_derivatives(const Planar_domain<GeomTraits>& domain,
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_MANN_INTERPOLANT_H
+#endif // CGAL_TRIANGULAR_SPLINE_MANN_MANN_INTERPOLANT_H

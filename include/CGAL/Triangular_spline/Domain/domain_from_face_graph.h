@@ -1,10 +1,10 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_DOMAIN_FROM_FACE_GRAPH_H
-#define CGAL_TRIANGULAR_SPLINE_DOMAIN_FROM_FACE_GRAPH_H
+#ifndef CGAL_TRIANGULAR_SPLINE_DOMAIN_DOMAIN_FROM_FACE_GRAPH_H
+#define CGAL_TRIANGULAR_SPLINE_DOMAIN_DOMAIN_FROM_FACE_GRAPH_H
 
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
 #include <CGAL/Cartesian_converter.h>
@@ -86,4 +86,4 @@ domain_from_face_graph(const FaceGraph& graph) {
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_DOMAIN_FROM_FACE_GRAPH_H
+#endif // CGAL_TRIANGULAR_SPLINE_DOMAIN_DOMAIN_FROM_FACE_GRAPH_H

@@ -1,12 +1,12 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_CONTINUITY_ADJUSTMENT_H
-#define CGAL_TRIANGULAR_SPLINE_CONTINUITY_ADJUSTMENT_H
+#ifndef CGAL_TRIANGULAR_SPLINE_MANN_CONTINUITY_ADJUSTMENT_H
+#define CGAL_TRIANGULAR_SPLINE_MANN_CONTINUITY_ADJUSTMENT_H
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/continuity.h>
 #include <CGAL/Triangular_spline/exceptions.h>
@@ -886,4 +886,4 @@ Ck_certificate certify_Ck(const Planar_domain<GeomTraits>& domain, const PatchSo
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_CONTINUITY_ADJUSTMENT_H
+#endif // CGAL_TRIANGULAR_SPLINE_MANN_CONTINUITY_ADJUSTMENT_H

@@ -1,10 +1,10 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_DOMAIN_LOCATOR_H
-#define CGAL_TRIANGULAR_SPLINE_DOMAIN_LOCATOR_H
+#ifndef CGAL_TRIANGULAR_SPLINE_DOMAIN_DOMAIN_LOCATOR_H
+#define CGAL_TRIANGULAR_SPLINE_DOMAIN_DOMAIN_LOCATOR_H
 
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 
 #include <CGAL/Exact_rational.h>
 #include <CGAL/number_utils.h>
@@ -531,4 +531,4 @@ private:
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_DOMAIN_LOCATOR_H
+#endif // CGAL_TRIANGULAR_SPLINE_DOMAIN_DOMAIN_LOCATOR_H

@@ -1,10 +1,10 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_DEGENERATE_FRAMES_H
-#define CGAL_TRIANGULAR_SPLINE_DEGENERATE_FRAMES_H
+#ifndef CGAL_TRIANGULAR_SPLINE_XU_DEGENERATE_FRAMES_H
+#define CGAL_TRIANGULAR_SPLINE_XU_DEGENERATE_FRAMES_H
 
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
@@ -324,4 +324,4 @@ Planar_domain<GeomTraits> perturb_degenerate_vertices(
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_DEGENERATE_FRAMES_H
+#endif // CGAL_TRIANGULAR_SPLINE_XU_DEGENERATE_FRAMES_H

@@ -1,11 +1,12 @@
 // Copyright (c) 2026 Triangular_spline contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TRIANGULAR_SPLINE_IO_CONSTRAINED_DOMAIN_H
-#define CGAL_TRIANGULAR_SPLINE_IO_CONSTRAINED_DOMAIN_H
+#ifndef CGAL_TRIANGULAR_SPLINE_DOMAIN_CONSTRAINED_DOMAIN_H
+#define CGAL_TRIANGULAR_SPLINE_DOMAIN_CONSTRAINED_DOMAIN_H
 
-#include <CGAL/Triangular_spline/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
@@ -248,4 +249,4 @@ constrained_domain(const std::vector<std::vector<typename GeomTraits::Point_2>>&
 } // namespace Triangular_spline
 } // namespace CGAL
 
-#endif // CGAL_TRIANGULAR_SPLINE_IO_CONSTRAINED_DOMAIN_H
+#endif // CGAL_TRIANGULAR_SPLINE_DOMAIN_CONSTRAINED_DOMAIN_H

@@ -1,0 +1,81 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_DOMAIN_DELAUNAY_DOMAIN_H
+#define CGAL_TRIANGULAR_SPLINE_DOMAIN_DELAUNAY_DOMAIN_H
+
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
+#include <CGAL/Triangular_spline/Domain/Scattered_data.h>
+#include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_face_base_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+
+/*!
+  \ingroup PkgTriangularSplineDomain
+  \brief returns the Delaunay triangulation of the data points as a `Planar_domain`, with the
+  data value of each domain vertex.
+
+  The triangulation is `CGAL::Delaunay_triangulation_2` (for cocircular points CGAL's
+  deterministic choice); its domain is the convex hull of the points. Domain vertex `v` is
+  the input point carrying value `second[v]`; vertex indices follow CGAL's face order, not
+  the input order; `input_index`, if given, receives for each domain vertex the index of its
+  point in `data`.
+  \tparam GeomTraits a model of `DelaunayTriangulationTraits_2` and `Kernel`
+  \throws Invalid_input if `points` and `values` differ in size, two points coincide, or all
+  points are collinear (data from `read_xyz()` passes these checks)
+*/
+template <class GeomTraits>
+std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
+delaunay_domain(const Scattered_data<GeomTraits>& data,
+                std::vector<std::size_t>* input_index = nullptr) {
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, GeomTraits>;
+  using Fb = CGAL::Triangulation_face_base_2<GeomTraits>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+  using Delaunay = CGAL::Delaunay_triangulation_2<GeomTraits, Tds>;
+  using FT = typename GeomTraits::FT;
+  if (data.points.size() != data.values.size())
+    throw Invalid_input("scattered data: " + std::to_string(data.points.size()) + " points but " +
+                        std::to_string(data.values.size()) + " values");
+  std::vector<std::pair<typename GeomTraits::Point_2, std::size_t>> indexed;
+  indexed.reserve(data.points.size());
+  for (std::size_t i = 0; i < data.points.size(); ++i)
+    indexed.emplace_back(data.points[i], i);
+  Delaunay triangulation(indexed.begin(), indexed.end());
+  if (triangulation.number_of_vertices() != data.points.size())
+    throw Invalid_input("scattered data: " +
+                        std::to_string(data.points.size() - triangulation.number_of_vertices()) +
+                        " points repeat an earlier point");
+  if (triangulation.dimension() < 2)
+    throw Invalid_input("scattered data: all " + std::to_string(data.points.size()) +
+                        " points are collinear: no triangle");
+  std::vector<typename Delaunay::Vertex_handle> handles;
+  Planar_domain<GeomTraits> domain = domain_from_triangulation_2<GeomTraits>(
+      triangulation, [](typename Delaunay::Face_handle) { return true; }, handles);
+  std::vector<FT> values;
+  values.reserve(handles.size());
+  for (const auto& h : handles)
+    values.push_back(data.values[h->info()]);
+  if (input_index) {
+    input_index->clear();
+    for (const auto& h : handles)
+      input_index->push_back(h->info());
+  }
+  return {std::move(domain), std::move(values)};
+}
+
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_DOMAIN_DELAUNAY_DOMAIN_H
