@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -96,11 +97,10 @@ void adjust_interpolant_network(benchmark::State& state, const TS::Planar_domain
     state.ResumeTiming();
     touched = TS::adjust_network(domain, patches, 1).number_of_touched_points();
     state.PauseTiming();
-    certified =
-        TS::certify_C1(
-            domain, [&](std::uint32_t f) -> const TS::Bezier_triangle<K>& { return patches[f]; },
-            std::is_same<K, Exact>::value ? 0 : 1e-9)
-            .certified;
+    certified = TS::certify_continuity(
+                    TS::Patch_network<K>(domain, patches), 1,
+                    TS::parameters::residual_tolerance(std::is_same<K, Exact>::value ? 0 : 1e-9))
+                    .certified;
     state.ResumeTiming();
   }
   state.counters["faces"] = double(domain.number_of_faces());
@@ -181,15 +181,14 @@ TS::Scattered_data<Fast> franke_data(int which) {
 }
 
 // Errors on a 101 x 101 grid of [0,1]^2, at the points inside the triangulation.
-template <class PatchSource>
-void accuracy_counters(benchmark::State& state, const TS::Planar_domain<Fast>& domain,
-                       PatchSource patch) {
-  const TS::Domain_locator<Fast> locator(domain);
+template <class Network>
+void accuracy_counters(benchmark::State& state, const Network& network) {
+  const TS::Domain_locator<Fast> locator(network.domain());
   std::vector<Fast::Point_2> queries;
   for (int j = 0; j <= 100; ++j)
     for (int i = 0; i <= 100; ++i)
       queries.emplace_back(i / 100.0, j / 100.0);
-  const std::vector<double> values = TS::evaluate_functional(domain, locator, patch, queries);
+  const std::vector<double> values = TS::evaluate_functional(network, locator, queries);
   double max_error = 0, sum_error = 0, sse = 0, mean = 0;
   std::size_t count = 0;
   for (std::size_t q = 0; q < queries.size(); ++q)
@@ -221,15 +220,13 @@ void BM_franke_mann(benchmark::State& state) {
   const auto data = franke_data(int(state.range(0)));
   const int degree = int(state.range(1));
   const auto [domain, values] = TS::delaunay_domain(data);
-  std::vector<TS::Bezier_triangle<Fast>> patches;
+  std::optional<TS::Mann_interpolant<Fast>> interpolant;
   for (auto _ : state) {
     const auto jets =
         TS::estimate_vertex_derivatives(domain, values, TS::mann_derivative_order(degree));
-    patches = TS::mann_interpolant(domain, jets, degree).patches;
+    interpolant.emplace(TS::mann_interpolant(domain, jets, degree));
   }
-  accuracy_counters(state, domain, [&](std::uint32_t f) -> const TS::Bezier_triangle<Fast>& {
-    return patches[f];
-  });
+  accuracy_counters(state, *interpolant);
   state.counters["data_points"] = double(data.points.size());
 }
 
@@ -240,7 +237,7 @@ void BM_franke_xu_c1(benchmark::State& state) {
   TS::C1_quintic_spline<Fast> spline(domain, TS::Corner_frame::Corner_and_two_stars);
   for (auto _ : state)
     TS::fit_vertex_data(spline, values, TS::Fit::Tangent_planes);
-  accuracy_counters(state, domain, [&](std::uint32_t f) { return spline.patch(f); });
+  accuracy_counters(state, spline);
   state.counters["data_points"] = double(data.points.size());
 }
 

@@ -28,8 +28,7 @@ const Mesh& surface() {
     TS::C1_quintic_spline<K> spline(std::move(domain));
     TS::fit_vertex_data(spline, heights, TS::Fit::Approximate);
     Mesh result;
-    TS::tessellate(
-        spline.domain(), [&spline](std::uint32_t f) { return spline.patch(f); }, 6, result);
+    TS::tessellate(spline, 6, result);
     return result;
   }();
   return mesh;

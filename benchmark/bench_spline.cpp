@@ -92,8 +92,7 @@ void BM_double_certify(benchmark::State& state) {
   TS::C1_quintic_spline<Fast> spline(jittered_grid<Fast>(n));
   TS::fit_vertex_data(spline, heights(spline.domain()), TS::Fit::Approximate);
   for (auto _ : state)
-    benchmark::DoNotOptimize(
-        TS::certify_C1(spline.domain(), [&](std::uint32_t f) { return spline.patch(f); }));
+    benchmark::DoNotOptimize(TS::certify_continuity(spline, 1));
   state.counters["faces"] = 2.0 * n * n;
 }
 
@@ -105,8 +104,7 @@ void BM_exact_build_and_certify(benchmark::State& state) {
   for (auto _ : state) {
     TS::C1_quintic_spline<Exact> spline(domain);
     TS::fit_vertex_data(spline, z, TS::Fit::Approximate);
-    certified =
-        TS::certify_C1(spline.domain(), [&](std::uint32_t f) { return spline.patch(f); }).certified;
+    certified = TS::certify_continuity(spline, 1).certified;
   }
   state.counters["faces"] = 2.0 * n * n;
   state.counters["certified"] = certified ? 1 : 0;

@@ -66,14 +66,11 @@ int main() {
   for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
     const Point_2 x = CGAL::centroid(points[domain.face(f)[0]], points[domain.face(f)[1]],
                                      points[domain.face(f)[2]]);
-    reproduces = reproduces && interpolant.patches[f].evaluate(x) == P.evaluate(x);
+    reproduces = reproduces && interpolant.patch(f).evaluate(x) == P.evaluate(x);
   }
-  auto patch = [&](std::uint32_t f) -> const TS::Bezier_triangle<Kernel>& {
-    return interpolant.patches[f];
-  };
-  const TS::C1_certificate certificate = TS::certify_C1(domain, patch);
+  const TS::Continuity_certificate certificate = TS::certify_continuity(interpolant, 1);
   std::cout << "interpolant of a quintic: reproduces it " << (reproduces ? "exactly" : "NOT")
-            << "; " << certificate.summary();
+            << "; C^1 certificate: " << TS::verdict_name(certificate.verdict) << "\n";
   ok = ok && reproduces && certificate.certified;
 
   // 4. General vertex data (here cubic Taylor polynomials of unrelated cubics): the C^0
@@ -87,10 +84,8 @@ int main() {
     other.push_back(cubic);
   }
   const TS::Mann_interpolant<Kernel> repaired = TS::mann_interpolant(domain, other);
-  auto repaired_patch = [&](std::uint32_t f) -> const TS::Bezier_triangle<Kernel>& {
-    return repaired.patches[f];
-  };
-  const bool repaired_c1 = TS::certify_C1(domain, repaired_patch).certified;
+  const bool repaired_c1 =
+      TS::certify_continuity(repaired, 1).verdict == TS::Certificate_verdict::proof;
   std::cout << "general data: " << repaired.adjustment.number_of_touched_points()
             << " control points moved over " << repaired.adjustment.number_of_changed_edges()
             << " edges, C^1 " << (repaired_c1 ? "certified" : "FAILED") << "\n";

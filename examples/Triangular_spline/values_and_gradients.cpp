@@ -48,7 +48,6 @@ int main() {
 
   // Locate-and-evaluate: one locator per domain, then any number of queries.
   const TS::Domain_locator<Kernel> locator(spline.domain());
-  const auto patch = [&spline](std::uint32_t f) { return spline.patch(f); };
   // A point 1e-12 of an edge length outside a hull edge, as rounding leaves it: it snaps to
   // the edge and gets the value at its projection, the edge's midpoint.
   const auto& d = spline.domain();
@@ -73,7 +72,7 @@ int main() {
   std::vector<Point_2> queries;
   for (const auto& c : cases)
     queries.push_back(c.first);
-  const auto jets = TS::evaluate_jets(d, locator, patch, queries, TS::Outside::Linear,
+  const auto jets = TS::evaluate_jets(spline, locator, queries, TS::Outside::Linear,
                                       /*order=*/2);
 
   bool all_exact = true;

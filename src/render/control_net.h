@@ -40,20 +40,22 @@ inline Point_role point_role(const CGAL::Triangular_spline::Multi_index& index) 
   }
 }
 
-// The control nets of `faces` patches: every patch's points and the edges of its triangular
-// grid, b_{i+1,j,k}-b_{i,j+1,k}-b_{i,j,k+1} for i+j+k = m-1. A functional patch's point
-// b_{ijk} sits at ((i r + j s + k t)/m, value) over its domain triangle (r, s, t); a
-// parametric patch's point is its value. Points and segments shared by neighbouring patches
-// appear once. `patch(f)` returns a CGAL::Triangular_spline::Bezier_triangle; `status(f,
-// index)` says whether b_index of patch f was prescribed or propagated.
-template <class PatchSource, class Status = Unknown_status>
-Net control_net(std::size_t faces, PatchSource patch, Status status = Status()) {
+// The control nets of the patches of a TriangularSplineNetwork: every patch's points and the
+// edges of its triangular grid, b_{i+1,j,k}-b_{i,j+1,k}-b_{i,j,k+1} for i+j+k = m-1. A
+// functional patch's point b_{ijk} sits at ((i r + j s + k t)/m, value) over its domain
+// triangle (r, s, t); a parametric patch's point is its value. Points and segments shared by
+// neighbouring patches appear once. `status(f, index)` says whether b_index of patch f was
+// prescribed or propagated.
+template <class Network, class Status = Unknown_status>
+Net control_net(const Network& network, Status status = Status()) {
   namespace TS = CGAL::Triangular_spline;
   Net net;
   std::map<Vector, std::size_t> seen_points;
   std::map<std::pair<Vector, Vector>, bool> seen_segments;
+  const std::size_t faces = network.domain().number_of_faces();
   for (std::size_t f = 0; f < faces; ++f) {
-    const auto& bezier = patch(f);
+    // binds to a stored patch, or extends the life of a computed one
+    const auto& bezier = network.patch(static_cast<typename Network::Index>(f));
     using Value = typename std::decay_t<decltype(bezier)>::Value_type;
     const int m = bezier.degree();
     auto position = [&](const TS::Multi_index& index) -> Vector {

@@ -22,6 +22,8 @@
 #include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 
+#include "report.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -221,7 +223,6 @@ Json run(const C1_job& job, std::ostream& out) {
   timings.set("fit_and_propagate", clock.lap());
 
   const auto& d = spline.domain();
-  auto patch = [&spline](std::uint32_t f) { return spline.patch(f); };
   // Double builds: residuals are round-off, accepted up to 1e-10 of the largest control
   // value; exact builds: the verdict is a proof.
   double scale = 1;
@@ -231,7 +232,8 @@ Json run(const C1_job& job, std::ostream& out) {
            std::string(job.exact ? "certifying exactly " : "checking ") +
                std::to_string(d.number_of_interior_edges()) + " interior edges",
            large);
-  const TS::C1_certificate certificate = TS::certify_C1(d, patch, job.exact ? 0 : 1e-10 * scale);
+  const TS::Continuity_certificate certificate = TS::certify_continuity(
+      spline, 1, TS::parameters::residual_tolerance(job.exact ? 0 : 1e-10 * scale));
   timings.set("certify", clock.lap());
 
   std::optional<long long> morgan_scott = TS::morgan_scott_dimension(d);
@@ -430,16 +432,12 @@ Json run(const C1_job& job, std::ostream& out) {
 
   if (!job.mesh.empty()) {
     progress("c1", "tessellating and writing " + job.mesh, large || job.levels >= 5);
-    report.set("mesh", write_tessellated_mesh(d, patch, job.levels, job.mesh));
+    report.set("mesh", write_tessellated_mesh(spline, job.levels, job.mesh));
     timings.set("tessellate_and_write", clock.lap());
   }
   if (!job.save.empty()) {
-    std::vector<TS::Bezier_triangle<K>> patches;
-    patches.reserve(d.number_of_faces());
-    for (std::uint32_t f = 0; f < d.number_of_faces(); ++f)
-      patches.push_back(spline.patch(f));
     std::ofstream file = open_output(job.save);
-    TS::write_spline_file(file, d, patches);
+    TS::write_spline_file(file, spline);
     report.set("saved", job.save);
     timings.set("save", clock.lap());
   }
@@ -449,7 +447,7 @@ Json run(const C1_job& job, std::ostream& out) {
     std::ifstream query_file = open_input(job.query);
     const auto queries = TS::read_query_points<K>(query_file, job.query);
     const TS::Domain_locator<K> locator(d);
-    const std::vector<double> values = TS::evaluate_functional(d, locator, patch, queries);
+    const std::vector<double> values = TS::evaluate_functional(spline, locator, queries);
     std::ofstream file = open_output(job.values);
     std::size_t outside = 0;
     for (double v : values) {
@@ -520,7 +518,7 @@ Json run(const C1_job& job, std::ostream& out) {
     }
     out << "  data range [" << data_min << ", " << data_max << "], surface range (sampled) ["
         << sampled_min << ", " << sampled_max << "]\n"
-        << "  " << certificate.summary();
+        << "  " << certificate_summary(certificate);
     if (!certificate.exact)
       out << "  (double build: use --exact for an exact proof of C^1; 'tspline certify' checks "
              "a saved file's values exactly and accepts their round-off with --tolerance "
@@ -554,17 +552,15 @@ template <class K, class Value>
 Certify_result certify_file(std::istream& in, const std::string& path, double tolerance,
                             std::ostream& out) {
   const TS::Spline_file<K, Value> file = TS::read_spline_file<K, Value>(in, path);
-  auto patch = [&file](std::uint32_t f) -> const TS::Bezier_triangle<K, Value>& {
-    return file.patches[f];
-  };
-  const TS::C1_certificate c = TS::certify_C1(file.domain, patch, tolerance >= 0 ? tolerance : 0);
-  out << "spline file " << path << ": " << file.domain.number_of_vertices() << " vertices, "
-      << file.domain.number_of_faces() << " patches of degree "
-      << (file.patches.empty() ? 0 : file.patches.front().degree()) << "\n"
-      << c.summary();
+  const TS::Continuity_certificate c = TS::certify_continuity(
+      file, 1, TS::parameters::residual_tolerance(tolerance >= 0 ? tolerance : 0));
+  out << "spline file " << path << ": " << file.domain().number_of_vertices() << " vertices, "
+      << file.domain().number_of_faces() << " patches of degree "
+      << (file.patches().empty() ? 0 : file.patches().front().degree()) << "\n"
+      << certificate_summary(c);
   // A spline saved by a double build carries round-off: say so rather than only "failed".
   double scale = 0;
-  for (const auto& p : file.patches)
+  for (const auto& p : file.patches())
     for (const Value& v : p.control_points())
       scale = (std::max)(scale, TS::max_abs_coordinate(v));
   std::string hint;
@@ -577,8 +573,8 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
            " accepts them (not a proof); build with --exact for a proof";
   Json report = Json::object();
   report.set("file", path);
-  report.set("vertices", file.domain.number_of_vertices());
-  report.set("faces", file.domain.number_of_faces());
+  report.set("vertices", file.domain().number_of_vertices());
+  report.set("faces", file.domain().number_of_faces());
   report.set("verdict", TS::verdict_name(c.verdict));
   report.set("certified_c1", c.verdict == TS::Certificate_verdict::proof);
   report.set("within_tolerance", c.certified);
@@ -597,8 +593,8 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
     v.push_back(e.vertices[0]);
     v.push_back(e.vertices[1]);
     entry.set("vertices", v);
-    entry.set("c0", e.c0);
-    entry.set("c1", e.c1);
+    entry.set("c0", e.achieved_order >= 0);
+    entry.set("c1", e.holds);
     entry.set("zero", e.zero);
     entry.set("residual", e.residual);
     entry.set("residual_log10", log10_json(e.residual_log10));

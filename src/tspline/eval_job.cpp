@@ -84,17 +84,14 @@ public:
   using Jet = TS::Point_jet<FT>;
 
   Evaluator(const std::string& input, int derivatives, TS::Outside outside)
-      : m_file(read(input)), m_locator(m_file.domain), m_derivatives(derivatives),
+      : m_file(read(input)), m_locator(m_file.domain()), m_derivatives(derivatives),
         m_outside(outside) {}
 
   // Jets of `points` (NaN-free where a value exists); counts inside and outside points.
   std::vector<std::optional<Jet>> evaluate(const std::vector<Point_2>& points) {
-    const auto patch = [this](std::uint32_t f) -> const TS::Bezier_triangle<K, FT>& {
-      return m_file.patches[f];
-    };
     // Strictly first, then the outside mode on the misses only: the counts come for free.
-    std::vector<std::optional<Jet>> jets = TS::evaluate_jets(
-        m_file.domain, m_locator, patch, points, TS::Outside::No_value, m_derivatives);
+    std::vector<std::optional<Jet>> jets =
+        TS::evaluate_jets(m_file, m_locator, points, TS::Outside::No_value, m_derivatives);
     std::vector<Point_2> missed;
     std::vector<std::size_t> where;
     for (std::size_t q = 0; q < jets.size(); ++q)
@@ -106,8 +103,7 @@ public:
     m_counts.outside += missed.size();
     m_counts.inside += points.size() - missed.size();
     if (m_outside != TS::Outside::No_value && !missed.empty()) {
-      auto extended =
-          TS::evaluate_jets(m_file.domain, m_locator, patch, missed, m_outside, m_derivatives);
+      auto extended = TS::evaluate_jets(m_file, m_locator, missed, m_outside, m_derivatives);
       for (std::size_t k = 0; k < missed.size(); ++k)
         jets[where[k]] = std::move(extended[k]);
     }
@@ -267,9 +263,9 @@ void run(const Eval_job& job, std::ostream& out) {
   const auto& f = evaluator.file();
   std::ostringstream summary;
   summary.precision(3);
-  summary << "spline " << job.input << ": " << f.domain.number_of_faces() << " patches of degree "
-          << (f.patches.empty() ? 0 : f.patches.front().degree()) << " (read in " << read_seconds
-          << " s, " << (job.exact ? "exact" : "double") << " arithmetic)\n"
+  summary << "spline " << job.input << ": " << f.domain().number_of_faces() << " patches of degree "
+          << f.degree() << " (read in " << read_seconds << " s, "
+          << (job.exact ? "exact" : "double") << " arithmetic)\n"
           << "evaluated " << c.points << " points (" << c.inside << " in the domain, " << c.outside
           << " outside: " << job.outside << ") in " << evaluate_seconds << " s";
   if (evaluate_seconds > 0)

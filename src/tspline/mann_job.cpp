@@ -2,6 +2,7 @@
 // scattered data or a height-field mesh (double or exact).
 
 #include "mann_job.h"
+#include "report.h"
 #include "files.h"
 #include "mesh_output.h"
 
@@ -49,7 +50,6 @@ Json adjustment_json(const TS::Network_adjustment& a, bool details) {
   result.set("touched_points", a.number_of_touched_points());
   result.set("changed_edges", a.number_of_changed_edges());
   result.set("projected_vertices", a.vertices.size());
-  result.set("seconds", a.seconds);
   if (!details)
     return result;
   Json edges = Json::array();
@@ -84,7 +84,7 @@ Json adjustment_json(const TS::Network_adjustment& a, bool details) {
   return result;
 }
 
-Json continuity_json(const TS::Ck_certificate& c) {
+Json continuity_json(const TS::Continuity_certificate& c) {
   Json result = Json::object();
   result.set("order", c.order);
   result.set("exact", c.exact);
@@ -96,7 +96,7 @@ Json continuity_json(const TS::Ck_certificate& c) {
   return result;
 }
 
-std::string order_summary(const TS::Ck_certificate& c) {
+std::string order_summary(const TS::Continuity_certificate& c) {
   return "C^" + std::to_string(c.order) + " on " +
          std::to_string(c.interior_edges - c.failed_edges) + " of " +
          std::to_string(c.interior_edges) + " interior edges (lowest order " +
@@ -109,13 +109,10 @@ Job_result adjust_file(std::istream& in, const Adjust_job& job, std::ostream& ou
   Json timings = Json::object();
   TS::Spline_file<Exact, Value> file = TS::read_spline_file<Exact, Value>(in, job.input);
   timings.set("read", clock.lap());
-  const auto& domain = file.domain;
-  auto& patches = file.patches;
-  const int n = patches.front().degree();
-  auto patch = [&patches](std::uint32_t f) -> const TS::Bezier_triangle<Exact, Value>& {
-    return patches[f];
-  };
-  const TS::Ck_certificate before = TS::certify_Ck(domain, patch, job.order);
+  const auto& domain = file.domain();
+  auto& patches = file.patches();
+  const int n = file.degree();
+  const TS::Continuity_certificate before = TS::certify_continuity(file, job.order);
   timings.set("check_before", clock.lap());
   // A double build's file is C^k up to round-off: adjusting "repairs" the round-off by moving
   // most control points and writes rationals far longer than the input (issue 13).
@@ -140,8 +137,8 @@ Job_result adjust_file(std::istream& in, const Adjust_job& job, std::ostream& ou
 
   const TS::Network_adjustment adjustment = TS::adjust_network(domain, patches, job.order);
   timings.set("adjust", clock.lap());
-  const TS::Ck_certificate after = TS::certify_Ck(domain, patch, job.order);
-  const TS::C1_certificate c1 = TS::certify_C1(domain, patch);
+  const TS::Continuity_certificate after = TS::certify_continuity(file, job.order);
+  const TS::Continuity_certificate c1 = TS::certify_continuity(file, 1);
   timings.set("certify", clock.lap());
   out << "  adjustment to C^" << job.order << " (exact): moved "
       << adjustment.number_of_touched_points() << " control points across "
@@ -149,7 +146,7 @@ Job_result adjust_file(std::istream& in, const Adjust_job& job, std::ostream& ou
       << " vertices\n"
       << "  after: " << order_summary(after) << "\n";
   if (job.order == 1)
-    out << "  " << c1.summary();
+    out << "  " << certificate_summary(c1);
   else
     out << "  C^" << job.order
         << " certificate (exact rational arithmetic): " << (after.certified ? "PASSED" : "FAILED")
@@ -157,7 +154,7 @@ Job_result adjust_file(std::istream& in, const Adjust_job& job, std::ostream& ou
 
   if (!job.output.empty()) {
     std::ofstream output = open_output(job.output);
-    TS::write_spline_file(output, domain, patches);
+    TS::write_spline_file(output, file);
     out << "  wrote " << job.output << "\n";
     timings.set("write", clock.lap());
   }
@@ -233,8 +230,7 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   timings.set("estimate_derivatives", clock.lap());
   const TS::Mann_interpolant<K> interpolant = TS::mann_interpolant(domain, jets, job.degree);
   timings.set("interpolant", clock.lap());
-  const auto& patches = interpolant.patches;
-  auto patch = [&patches](std::uint32_t f) -> const TS::Bezier_triangle<K>& { return patches[f]; };
+  const auto& patches = interpolant.patches();
 
   // Double builds: residuals are round-off, accepted up to a small multiple of the largest
   // control value (C^1: 1e-10, as `tspline c1`; C^k: 1e-8); exact builds: proofs.
@@ -242,9 +238,11 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   for (const auto& p : patches)
     for (const FT& v : p.control_points())
       scale = (std::max)(scale, TS::max_abs_coordinate(v));
-  const TS::C1_certificate c1 = TS::certify_C1(domain, patch, job.exact ? 0 : 1e-10 * scale);
-  const TS::Ck_certificate ck =
-      TS::certify_Ck(domain, patch, interpolant.continuity, job.exact ? 0 : 1e-8 * scale);
+  const TS::Continuity_certificate c1 = TS::certify_continuity(
+      interpolant, 1, TS::parameters::residual_tolerance(job.exact ? 0 : 1e-10 * scale));
+  const TS::Continuity_certificate ck =
+      TS::certify_continuity(interpolant, interpolant.continuity,
+                             TS::parameters::residual_tolerance(job.exact ? 0 : 1e-8 * scale));
   timings.set("certify", clock.lap());
 
   // Interpolation error at the data points: the corner values of the incident patches.
@@ -285,12 +283,12 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   report.set("adjustment", adjustment_json(interpolant.adjustment, false));
 
   if (!job.mesh.empty()) {
-    report.set("mesh", write_tessellated_mesh(domain, patch, job.levels, job.mesh));
+    report.set("mesh", write_tessellated_mesh(interpolant, job.levels, job.mesh));
     timings.set("tessellate_and_write", clock.lap());
   }
   if (!job.save.empty()) {
     std::ofstream file = open_output(job.save);
-    TS::write_spline_file(file, domain, patches);
+    TS::write_spline_file(file, interpolant);
     report.set("saved", job.save);
     timings.set("save", clock.lap());
   }
@@ -311,7 +309,7 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
       << interpolant.adjustment.number_of_changed_edges()
       << " edges, arithmetic: " << (job.exact ? "exact rationals" : "double") << "\n"
       << "  largest interpolation error at the data points: " << max_vertex_error << "\n"
-      << "  " << c1.summary();
+      << "  " << certificate_summary(c1);
   if (interpolant.continuity > 1)
     out << "  C^" << interpolant.continuity << ": "
         << (ck.certified ? (ck.exact ? "PASSED (exact)" : "passed (tolerance)") : "FAILED") << "\n";

@@ -1,5 +1,5 @@
-// Tessellate patches over a planar domain and write the mesh: shared by the jobs that offer
-// --mesh (c1, mann). Header-only because it is templated on the kernel and patch source.
+// Tessellate a spline network and write the mesh: shared by the jobs that offer --mesh (c1,
+// mann). Header-only because it is templated on the network.
 
 #ifndef TSPLINE_MESH_OUTPUT_H
 #define TSPLINE_MESH_OUTPUT_H
@@ -17,11 +17,10 @@ namespace tspline {
 
 // Tessellates with `levels` 4-splits per patch, writes `path` (.ply/.off/.obj), returns the
 // report entry {path, levels, vertices, faces}.
-template <class Domain, class PatchSource>
-Json write_tessellated_mesh(const Domain& domain, const PatchSource& patch, int levels,
-                            const std::string& path) {
+template <class Network>
+Json write_tessellated_mesh(const Network& network, int levels, const std::string& path) {
   CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> mesh;
-  const auto stats = CGAL::Triangular_spline::tessellate(domain, patch, levels, mesh);
+  const auto stats = CGAL::Triangular_spline::tessellate(network, levels, mesh);
   CGAL::Triangular_spline::write_mesh(path, mesh);
   Json m = Json::object();
   m.set("path", path);

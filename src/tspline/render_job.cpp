@@ -83,21 +83,18 @@ template <class Value>
 void tessellate_spline_file(std::istream& in, const std::string& path, const Render_job& job,
                             Progress& progress, Scene& scene) {
   const TS::Spline_file<K, Value> file = TS::read_spline_file<K, Value>(in, path);
-  const std::size_t faces = file.domain.number_of_faces();
-  auto patch = [&file](std::size_t f) -> const TS::Bezier_triangle<K, Value>& {
-    return file.patches[f];
-  };
+  const std::size_t faces = file.domain().number_of_faces();
   scene.patches = faces;
-  scene.degree = file.patches.empty() ? 0 : file.patches.front().degree();
+  scene.degree = file.degree();
   scene.levels = job.levels ? *job.levels : automatic_levels(faces);
   const auto start = std::chrono::steady_clock::now();
   const std::size_t triangles = faces << (2 * scene.levels);
   progress.begin("tessellating " + std::to_string(triangles) + " triangles", triangles);
-  TS::tessellate(file.domain, patch, scene.levels, scene.mesh);
+  TS::tessellate(file, scene.levels, scene.mesh);
   progress.end();
   scene.tessellation_seconds = seconds_since(start);
   if (job.options.mode == render::Mode::Net)
-    scene.net = render::control_net(faces, patch);
+    scene.net = render::control_net(file);
   scene.kind = std::string("spline (") +
                (TS::Value_traits<Value>::dimension == 3 ? "parametric" : "functional") +
                ", degree " + std::to_string(scene.degree) + ")";
@@ -343,17 +340,14 @@ void render_demo_pictures(const std::filesystem::path& dir, const std::string& s
   }
 
   const TS::C1_quintic_spline<K> spline = small_example();
-  const auto& domain = spline.domain();
-  auto patch = [&spline](std::size_t f) { return spline.patch(static_cast<std::uint32_t>(f)); };
   auto status = [&spline](std::size_t f, const TS::Multi_index& index) {
     return spline.is_free(spline.slot(static_cast<std::uint32_t>(f), index))
                ? render::Point_status::Prescribed
                : render::Point_status::Propagated;
   };
-  const render::Net net = render::control_net(domain.number_of_faces(), patch, status);
+  const render::Net net = render::control_net(spline, status);
   Surface_mesh mesh;
-  TS::tessellate(
-      domain, [&spline](std::uint32_t f) { return spline.patch(f); }, 4, mesh);
+  TS::tessellate(spline, 4, mesh);
   render::Options options = job.options;
   options.mode = render::Mode::Net;
   options.azimuth = -25;
@@ -363,7 +357,7 @@ void render_demo_pictures(const std::filesystem::path& dir, const std::string& s
   std::size_t prescribed = 0;
   for (const auto& p : net.points)
     prescribed += p.status == render::Point_status::Prescribed ? 1 : 0;
-  out << "  " << path << ": control net of a " << domain.number_of_faces()
+  out << "  " << path << ": control net of a " << spline.domain().number_of_faces()
       << "-triangle C^1 quintic spline with " << spline.degenerate_frames().size()
       << " degenerate frames, " << prescribed << " prescribed and "
       << net.points.size() - prescribed << " propagated control points\n";

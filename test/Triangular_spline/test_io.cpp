@@ -694,25 +694,25 @@ template <class K, class Value>
 void expect_same_spline(const TS::Planar_domain<K>& domain,
                         const std::vector<TS::Bezier_triangle<K, Value>>& patches,
                         const TS::Spline_file<K, Value>& read) {
-  ASSERT_EQ(read.domain.points(), domain.points());
+  ASSERT_EQ(read.domain().points(), domain.points());
   // The file's faces follow the patches' vertex order, so a face comes back as a rotation
   // of the original (both counter-clockwise).
-  ASSERT_EQ(read.domain.number_of_faces(), domain.number_of_faces());
+  ASSERT_EQ(read.domain().number_of_faces(), domain.number_of_faces());
   for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
-    const auto& a = read.domain.face(f);
+    const auto& a = read.domain().face(f);
     const auto& b = domain.face(f);
     const bool rotation = (a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) ||
                           (a[0] == b[1] && a[1] == b[2] && a[2] == b[0]) ||
                           (a[0] == b[2] && a[1] == b[0] && a[2] == b[1]);
     ASSERT_TRUE(rotation) << "face " << f;
   }
-  ASSERT_EQ(read.patches.size(), patches.size());
+  ASSERT_EQ(read.patches().size(), patches.size());
   for (std::size_t f = 0; f < patches.size(); ++f) {
-    ASSERT_EQ(read.patches[f].degree(), patches[f].degree());
+    ASSERT_EQ(read.patches()[f].degree(), patches[f].degree());
     for (int i = 0; i < 3; ++i)
-      EXPECT_EQ(read.patches[f].vertex(i), patches[f].vertex(i));
+      EXPECT_EQ(read.patches()[f].vertex(i), patches[f].vertex(i));
     // Bit for bit: == on doubles, exact equality on rationals.
-    EXPECT_TRUE(read.patches[f].control_points() == patches[f].control_points()) << "face " << f;
+    EXPECT_TRUE(read.patches()[f].control_points() == patches[f].control_points()) << "face " << f;
   }
 }
 
@@ -727,7 +727,9 @@ TYPED_TEST(SplineFile, FunctionalRoundTrip) {
   const auto [domain, heights] = TS::demo_data<K>();
   const auto patches = random_patches<K, typename K::FT>(domain, 5, 11);
   std::stringstream file;
-  TS::write_spline_file(file, domain, patches);
+  TS::write_spline_file(
+      file,
+      TS::Patch_network<K, typename decltype(patches)::value_type::Value_type>(domain, patches));
   const std::string text = file.str();
   EXPECT_EQ(text.rfind("tspline-spline 1\n", 0), 0u);
   EXPECT_NE(text.find(is_exact<K> ? "number_type exact\n" : "number_type double\n"),
@@ -744,7 +746,9 @@ TYPED_TEST(SplineFile, ParametricRoundTrip) {
   const auto [domain, values] = TS::delaunay_domain(TS::read_xyz<K>(xyz, "points.xyz"));
   const auto patches = random_patches<K, Vector_3>(domain, 4, 5);
   std::stringstream file;
-  TS::write_spline_file(file, domain, patches);
+  TS::write_spline_file(
+      file,
+      TS::Patch_network<K, typename decltype(patches)::value_type::Value_type>(domain, patches));
   EXPECT_NE(file.str().find("dimension 3\n"), std::string::npos);
   // The header peek finds the dimension and rewinds, so the full read still works.
   EXPECT_EQ(TS::spline_file_dimension(file), 3);
@@ -763,18 +767,18 @@ TYPED_TEST(SplineFile, WriterChecksPatches) {
   const TS::Planar_domain<K>& domain = data.first; // lambdas cannot capture structured bindings
   auto patches = random_patches<K, typename K::FT>(domain, 2, 3);
   std::ostringstream out;
+  using Network = TS::Patch_network<K>;
   auto fewer = patches;
   fewer.pop_back();
-  EXPECT_TRUE(throws_with([&] { TS::write_spline_file(out, domain, fewer); },
-                          {"255 patches for 256 faces"}));
+  EXPECT_TRUE(throws_with([&] { Network(domain, fewer); }, {"patch network: 255 patches for a domain of 256 faces"}));
   auto swapped = patches;
   std::swap(swapped[0], swapped[100]);
-  EXPECT_TRUE(throws_with([&] { TS::write_spline_file(out, domain, swapped); },
+  EXPECT_TRUE(throws_with([&] { TS::write_spline_file(out, Network(domain, swapped)); },
                           {"patch 0", "is not a vertex of face 0"}));
   auto mixed = patches;
   mixed[7] = mixed[7].elevate_degree();
-  EXPECT_TRUE(
-      throws_with([&] { TS::write_spline_file(out, domain, mixed); }, {"patch 7 has degree 3"}));
+  EXPECT_TRUE(throws_with([&] { TS::write_spline_file(out, Network(domain, mixed)); },
+                          {"patch 7 has degree 3"}));
 }
 
 TEST(SplineFileConversion, NumberTypesConvertAsDocumented) {
@@ -802,23 +806,23 @@ TEST(SplineFileConversion, NumberTypesConvertAsDocumented) {
   {
     std::istringstream in(with("exact", "1/3"));
     const auto read = TS::read_spline_file<Exact_kernel>(in, "e.spline");
-    EXPECT_EQ(read.patches[0].control_points()[0], Exact_FT(1) / Exact_FT(10));
-    EXPECT_EQ(read.patches[0].control_points()[1], Exact_FT(1) / Exact_FT(3));
-    EXPECT_EQ(read.domain.point(2).y(), Exact_FT(1) / Exact_FT(10));
+    EXPECT_EQ(read.patches()[0].control_points()[0], Exact_FT(1) / Exact_FT(10));
+    EXPECT_EQ(read.patches()[0].control_points()[1], Exact_FT(1) / Exact_FT(3));
+    EXPECT_EQ(read.domain().point(2).y(), Exact_FT(1) / Exact_FT(10));
     std::istringstream in2(with("exact", "1/3"));
     const auto rounded = TS::read_spline_file<Epick>(in2, "e.spline");
-    EXPECT_EQ(rounded.patches[0].control_points()[0], 0.1);
-    EXPECT_EQ(rounded.patches[0].control_points()[1], 1.0 / 3.0);
-    EXPECT_EQ(rounded.patches[0].control_points()[2], 2.675);
-    EXPECT_EQ(rounded.domain.point(2).y(), 0.1);
+    EXPECT_EQ(rounded.patches()[0].control_points()[0], 0.1);
+    EXPECT_EQ(rounded.patches()[0].control_points()[1], 1.0 / 3.0);
+    EXPECT_EQ(rounded.patches()[0].control_points()[2], 2.675);
+    EXPECT_EQ(rounded.domain().point(2).y(), 0.1);
   }
   // double file -> exact kernel: the doubles, converted exactly.
   {
     std::istringstream in(with("double", "0.3"));
     const auto read = TS::read_spline_file<Exact_kernel>(in, "d.spline");
-    EXPECT_EQ(read.patches[0].control_points()[0], Exact_FT(0.1));
-    EXPECT_EQ(read.patches[0].control_points()[1], Exact_FT(0.3));
-    EXPECT_EQ(read.domain.point(2).y(), Exact_FT(0.1));
+    EXPECT_EQ(read.patches()[0].control_points()[0], Exact_FT(0.1));
+    EXPECT_EQ(read.patches()[0].control_points()[1], Exact_FT(0.3));
+    EXPECT_EQ(read.domain().point(2).y(), Exact_FT(0.1));
     std::istringstream in2(with("double", "1/3"));
     EXPECT_TRUE(throws_with([&] { TS::read_spline_file<Exact_kernel>(in2, "d.spline"); },
                             {"d.spline:13:", "\"1/3\"", "not a decimal number"}));
@@ -848,8 +852,8 @@ TYPED_TEST(SplineFile, MalformedFilesAreRejectedWithTheLine) {
                                                 "faces") +
                           "# trailing comment\n\n");
     const auto spline = TS::read_spline_file<K>(in, "s.spline");
-    EXPECT_EQ(spline.domain.number_of_faces(), 2u);
-    EXPECT_EQ(spline.patches[1].control_points()[2], typename K::FT(-7));
+    EXPECT_EQ(spline.domain().number_of_faces(), 2u);
+    EXPECT_EQ(spline.patches()[1].control_points()[2], typename K::FT(-7));
   }
   EXPECT_TRUE(throws_with(read(""), {"s.spline:0:", "unexpected end of file"}));
   EXPECT_TRUE(throws_with(read(replace("tspline-spline 1", "tspline-splin 1")),
@@ -926,7 +930,7 @@ TYPED_TEST(SplineFile, BlankOnlyLinesAreBlank) {
     std::istringstream in(text);
     EXPECT_EQ(TS::spline_file_dimension(in), 1);
     const auto spline = TS::read_spline_file<K>(in, "blank.spline");
-    EXPECT_EQ(spline.patches.at(0).control_points().at(2), typename K::FT(3));
+    EXPECT_EQ(spline.patches().at(0).control_points().at(2), typename K::FT(3));
     for (const std::string& alone : {b, b + "\n", b + "\n" + b})
       EXPECT_TRUE(throws_with(
           [&] {

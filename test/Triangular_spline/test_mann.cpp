@@ -6,6 +6,7 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Mann/Continuity_adjustment.h>
+#include <CGAL/Triangular_spline/Patch_network.h>
 #include <CGAL/Triangular_spline/certify.h>
 #include <CGAL/Triangular_spline/Mann/mann_interpolant.h>
 #include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
@@ -46,6 +47,15 @@ bool identical(const std::vector<Bezier_triangle<K, Value>>& a,
     if (a[f].control_points() != b[f].control_points())
       return false;
   return true;
+}
+
+// The C^k certificate of `patches` over `domain` (copied into a network).
+template <class K, class Value>
+TS::Continuity_certificate certify_patches(const Planar_domain<K>& domain,
+                                           const std::vector<Bezier_triangle<K, Value>>& patches,
+                                           int k, double tolerance = 0) {
+  return TS::certify_continuity(TS::Patch_network<K, Value>(domain, patches), k,
+                                TS::parameters::residual_tolerance(tolerance));
 }
 
 } // namespace
@@ -323,7 +333,6 @@ TYPED_TEST(MannTest, BadPairsAreRejected) {
 // Networks
 
 TYPED_TEST(MannTest, RandomNetworksBecomeCk) {
-  using K = TypeParam;
   for (int k : {1, 2}) {
     if (k == 2 && !this->exact)
       continue; // C^2 of random double nets: residuals are all round-off; covered exactly
@@ -335,15 +344,14 @@ TYPED_TEST(MannTest, RandomNetworksBecomeCk) {
     EXPECT_EQ(report.degree, n);
     EXPECT_EQ(report.edges.size(), domain.number_of_interior_edges());
     EXPECT_FALSE(report.vertices.empty()); // random corners: every vertex is projected
-    auto patch = [&](std::uint32_t f) -> const Bezier_triangle<K>& { return patches[f]; };
     if (this->exact) {
-      const TS::Ck_certificate certificate = TS::certify_Ck(domain, patch, k);
+      const TS::Continuity_certificate certificate = certify_patches(domain, patches, k);
       EXPECT_TRUE(certificate.exact);
       EXPECT_TRUE(certificate.certified)
           << "k=" << k << ": " << certificate.failed_edges << " failed edges";
       EXPECT_EQ(certificate.lowest_order, k);
       if (k == 1) {
-        EXPECT_TRUE(TS::certify_C1(domain, patch).certified);
+        EXPECT_TRUE(certify_patches(domain, patches, 1).certified);
       }
       // Idempotent: a C^k network is left alone, bit for bit.
       const auto before = patches;
@@ -354,8 +362,8 @@ TYPED_TEST(MannTest, RandomNetworksBecomeCk) {
       double scale = 1;
       for (const auto& p : patches)
         scale = (std::max)(scale, scale_of(p));
-      const TS::Ck_certificate certificate =
-          TS::certify_Ck(domain, patch, k, this->tolerance(scale, k));
+      const TS::Continuity_certificate certificate =
+          certify_patches(domain, patches, k, this->tolerance(scale, k));
       EXPECT_TRUE(certificate.certified) << "largest residual " << certificate.max_residual;
     }
     // The edge sweep moves points outside both corner regions only.
@@ -405,9 +413,8 @@ TYPED_TEST(MannTest, XuC1SplinesAreUnchangedByTheC1Adjustment) {
   std::vector<Bezier_triangle<K>> patches;
   for (std::uint32_t f = 0; f < spline.domain().number_of_faces(); ++f)
     patches.push_back(spline.patch(f));
-  auto patch = [&](std::uint32_t f) -> const Bezier_triangle<K>& { return patches[f]; };
-  ASSERT_TRUE(TS::certify_C1(spline.domain(), patch).certified);
-  ASSERT_FALSE(TS::certify_Ck(spline.domain(), patch, 2).certified);
+  ASSERT_TRUE(certify_patches(spline.domain(), patches, 1).certified);
+  ASSERT_FALSE(certify_patches(spline.domain(), patches, 2).certified);
   const auto before = patches;
   const TS::Network_adjustment report = TS::adjust_network(spline.domain(), patches, 1);
   EXPECT_EQ(report.number_of_touched_points(), 0u);
@@ -429,8 +436,7 @@ TYPED_TEST(MannTest, ParametricNetworksAreAdjustedToo) {
     patches.emplace_back(5, domain.point(t[0]), domain.point(t[1]), domain.point(t[2]), net);
   }
   TS::adjust_network(domain, patches, 1);
-  auto patch = [&](std::uint32_t f) -> const Bezier_triangle<K, Vector_3>& { return patches[f]; };
-  EXPECT_TRUE(TS::certify_Ck(domain, patch, 1).certified);
+  EXPECT_TRUE(certify_patches(domain, patches, 1).certified);
 }
 
 TYPED_TEST(MannTest, DegreeRuleAndBadNetworksAreRefused) {
@@ -547,9 +553,9 @@ TYPED_TEST(MannTest, PolynomialPrecisionOfTheInterpolant) {
       jets.push_back(TS::taylor_polynomial(P, p));
     const auto c0 = TS::mann_c0_network(domain, jets, n);
     const auto result = TS::mann_interpolant(domain, jets, n);
-    EXPECT_EQ(result.degree, n);
+    EXPECT_EQ(result.degree(), n);
     EXPECT_EQ(result.continuity, k);
-    ASSERT_EQ(result.patches.size(), domain.number_of_faces());
+    ASSERT_EQ(result.patches().size(), domain.number_of_faces());
     double scale = 1;
     for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
       const auto& t = domain.face(f);
@@ -559,17 +565,17 @@ TYPED_TEST(MannTest, PolynomialPrecisionOfTheInterpolant) {
       for (std::size_t c = 0; c < expected.control_points().size(); ++c) {
         EXPECT_TRUE(same_value(c0[f].control_points()[c], expected.control_points()[c], this->exact,
                                1e-9, scale_of(expected)));
-        EXPECT_TRUE(same_value(result.patches[f].control_points()[c], expected.control_points()[c],
+        EXPECT_TRUE(same_value(result.patch(f).control_points()[c], expected.control_points()[c],
                                this->exact, 1e-9, scale_of(expected)));
       }
     }
-    auto patch = [&](std::uint32_t f) -> const Bezier_triangle<K>& { return result.patches[f]; };
+    const auto& patches = result.patches();
     if (this->exact) {
       EXPECT_EQ(result.adjustment.number_of_touched_points(), 0u);
-      EXPECT_TRUE(TS::certify_C1(domain, patch).certified);
-      EXPECT_TRUE(TS::certify_Ck(domain, patch, k).certified);
+      EXPECT_TRUE(certify_patches(domain, patches, 1).certified);
+      EXPECT_TRUE(certify_patches(domain, patches, k).certified);
     } else {
-      EXPECT_TRUE(TS::certify_C1(domain, patch, this->tolerance(scale, 1)).certified);
+      EXPECT_TRUE(certify_patches(domain, patches, 1, this->tolerance(scale, 1)).certified);
     }
   }
 }
@@ -589,17 +595,17 @@ TYPED_TEST(MannTest, GeneralVertexDataGivesACkInterpolant) {
     // Vertex data is consistent: no vertex step; the edge sweep moves few points.
     EXPECT_TRUE(result.adjustment.vertices.empty());
     EXPECT_GT(result.adjustment.number_of_changed_edges(), 0u);
-    auto patch = [&](std::uint32_t f) -> const Bezier_triangle<K>& { return result.patches[f]; };
+    const auto& patches = result.patches();
     if (this->exact) {
-      EXPECT_TRUE(TS::certify_Ck(domain, patch, k).certified);
+      EXPECT_TRUE(certify_patches(domain, patches, k).certified);
       if (k == 1) {
-        EXPECT_TRUE(TS::certify_C1(domain, patch).certified);
+        EXPECT_TRUE(certify_patches(domain, patches, 1).certified);
       }
     } else {
       double scale = 1;
-      for (const auto& p : result.patches)
+      for (const auto& p : result.patches())
         scale = (std::max)(scale, scale_of(p));
-      EXPECT_TRUE(TS::certify_C1(domain, patch, this->tolerance(scale, 1)).certified);
+      EXPECT_TRUE(certify_patches(domain, patches, 1, this->tolerance(scale, 1)).certified);
     }
     if (n == 5) { // one point per patch and edge, at (1, 2, 2) in the edge's frame
       for (const auto& e : result.adjustment.edges) {
@@ -610,7 +616,7 @@ TYPED_TEST(MannTest, GeneralVertexDataGivesACkInterpolant) {
     for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f)
       for (int c = 0; c < 3; ++c) {
         const std::uint32_t v = domain.face(f)[c];
-        const auto& P = result.patches[f];
+        const auto& P = result.patch(f);
         for (int p = 0; p <= 2 * k; ++p)
           for (int q = 0; p + q <= 2 * k; ++q) {
             FT factorials(1);
@@ -658,7 +664,7 @@ TYPED_TEST(MannTest, EstimatedDerivativesAreExactForPolynomialData) {
   for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
     const auto x = CGAL::centroid(domain.point(domain.face(f)[0]), domain.point(domain.face(f)[1]),
                                   domain.point(domain.face(f)[2]));
-    EXPECT_TRUE(same_value(result.patches[f].evaluate(x), P.evaluate(x), this->exact, 1e-6, 1e4));
+    EXPECT_TRUE(same_value(result.patch(f).evaluate(x), P.evaluate(x), this->exact, 1e-6, 1e4));
   }
 }
 

@@ -8,6 +8,7 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangular_spline/Patch_network.h>
 #include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Domain/Domain_locator.h>
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
@@ -136,10 +137,23 @@ std::vector<Bezier_triangle<K, Value>> patches_of(const Planar_domain<K>& domain
   return patches;
 }
 
-template <class Patches>
-auto source(const Patches& patches) {
-  return [&patches](Index f) -> const typename Patches::value_type& { return patches[f]; };
+// The patches over `domain` as a TriangularSplineNetwork (a copy of both).
+template <class K, class Patch>
+TS::Patch_network<K, typename Patch::Value_type> network(const Planar_domain<K>& domain,
+                                                         const std::vector<Patch>& patches) {
+  return TS::Patch_network<K, typename Patch::Value_type>(domain, patches);
 }
+
+// A model of TriangularSplineNetwork whose patch(f) returns by value (as C1_quintic_spline).
+template <class Network>
+struct By_value_network {
+  using Geom_traits = typename Network::Geom_traits;
+  using Index = typename Network::Index;
+  const Network& network;
+  const auto& domain() const { return network.domain(); }
+  auto patch(Index f) const { return network.patch(f); }
+  int degree() const { return network.degree(); }
+};
 
 template <class K>
 std::vector<std::pair<std::string, Planar_domain<K>>> test_domains(Delaunay<K>& dt) {
@@ -458,8 +472,8 @@ TYPED_TEST(Output, EvaluateFunctionalReproducesThePolynomial) {
         inside.push_back(false);
       }
     const std::vector<double> values =
-        TS::evaluate_functional(domain, locator, source(patches), queries);
-    const auto exact_values = TS::evaluate_at(domain, locator, source(patches), queries);
+        TS::evaluate_functional(network(domain, patches), locator, queries);
+    const auto exact_values = TS::evaluate_at(network(domain, patches), locator, queries);
     ASSERT_EQ(values.size(), queries.size());
     ASSERT_EQ(exact_values.size(), queries.size());
     for (std::size_t q = 0; q < queries.size(); ++q) {
@@ -479,8 +493,9 @@ TYPED_TEST(Output, EvaluateFunctionalReproducesThePolynomial) {
           same_value(*exact_values[q], expected, exact, 1e-9, (std::max)(1.0, std::abs(e))));
     }
     // the one-point overload agrees
-    EXPECT_EQ(TS::evaluate_at(domain, locator, source(patches), queries.front()).has_value(), true);
-    EXPECT_FALSE(TS::evaluate_at(domain, locator, source(patches), Point_2(-50, -50)).has_value());
+    EXPECT_EQ(TS::evaluate_at(network(domain, patches), locator, queries.front()).has_value(),
+              true);
+    EXPECT_FALSE(TS::evaluate_at(network(domain, patches), locator, Point_2(-50, -50)).has_value());
   }
 }
 
@@ -497,9 +512,9 @@ TYPED_TEST(Output, EvaluateAtParametricPatches) {
   for (Index f = 0; f < domain.number_of_faces(); ++f)
     queries.push_back(random_point_in(domain, f, random));
   queries.emplace_back(5, 5);
-  // a patch source returning by value works as well
-  const auto by_value = [&patches](Index f) { return patches[f]; };
-  const auto values = TS::evaluate_at(domain, locator, by_value, queries);
+  // a network returning patches by value works as well
+  const auto stored = network(domain, patches);
+  const auto values = TS::evaluate_at(By_value_network<decltype(stored)>{stored}, locator, queries);
   for (std::size_t q = 0; q + 1 < queries.size(); ++q) {
     ASSERT_TRUE(values[q].has_value());
     const Vector_3 expected = polynomial.evaluate(queries[q]);
@@ -584,7 +599,7 @@ TYPED_TEST(Output, JetsReproduceThePolynomialDerivatives) {
       for (int trial = 0; trial < 3; ++trial)
         queries.push_back(random_point_in(domain, f, random));
     for (int order = 0; order <= 2; ++order) {
-      const auto jets = TS::evaluate_jets(domain, locator, source(patches), queries,
+      const auto jets = TS::evaluate_jets(network(domain, patches), locator, queries,
                                           TS::Outside::No_value, order);
       ASSERT_EQ(jets.size(), queries.size());
       for (std::size_t q = 0; q < queries.size(); ++q) {
@@ -600,9 +615,9 @@ TYPED_TEST(Output, JetsReproduceThePolynomialDerivatives) {
         }
       }
     }
-    EXPECT_TRUE(same_jet(*TS::evaluate_jet(domain, locator, source(patches), queries.back()),
+    EXPECT_TRUE(same_jet(*TS::evaluate_jet(network(domain, patches), locator, queries.back()),
                          polynomial_jet(polynomial, queries.back()), exact, 1e3));
-    EXPECT_FALSE(TS::evaluate_jet(domain, locator, source(patches), Point_2(-50, 7)).has_value());
+    EXPECT_FALSE(TS::evaluate_jet(network(domain, patches), locator, Point_2(-50, 7)).has_value());
   }
 }
 
@@ -642,8 +657,7 @@ TEST(Jets, C1SplineFittedToACubicHasTheCubicsDerivativesExactly) {
   std::vector<K::Point_2> queries;
   for (Index f = 0; f < spline.domain().number_of_faces(); ++f)
     queries.push_back(random_point_in(spline.domain(), f, random));
-  const auto jets = TS::evaluate_jets(
-      spline.domain(), locator, [&spline](Index f) { return spline.patch(f); }, queries);
+  const auto jets = TS::evaluate_jets(spline, locator, queries);
   for (std::size_t q = 0; q < queries.size(); ++q) {
     ASSERT_TRUE(jets[q].has_value());
     EXPECT_TRUE(same_jet(*jets[q], polynomial_jet(cubic, queries[q]), true, 1)) << queries[q];
@@ -673,11 +687,11 @@ TYPED_TEST(Output, QueriesOnHullEdgesUpToRoundingGetAValue) {
       const auto location = locator.locate_snapped(near);
       ASSERT_TRUE(location.has_value()) << near;
       const double values =
-          TS::evaluate_functional(domain, locator, source(patches), std::vector<Point_2>{near})
+          TS::evaluate_functional(network(domain, patches), locator, std::vector<Point_2>{near})
               .front();
       const double expected = CGAL::to_double(polynomial.evaluate(on));
       EXPECT_NEAR(values, expected, 1e-9 * (std::max)(1.0, std::abs(expected)));
-      const auto jet = TS::evaluate_jet(domain, locator, source(patches), near);
+      const auto jet = TS::evaluate_jet(network(domain, patches), locator, near);
       ASSERT_TRUE(jet.has_value());
       // the projection of `near` onto the edge is `on`, exactly in exact arithmetic
       EXPECT_TRUE(same_jet(*jet, polynomial_jet(polynomial, on), exact, 1e3));
@@ -685,7 +699,7 @@ TYPED_TEST(Output, QueriesOnHullEdgesUpToRoundingGetAValue) {
       const Point_2 far = point_outside_edge(domain, e, FT(1) / FT(10000000)).first;
       EXPECT_FALSE(locator.locate_snapped(far).has_value()) << far;
       EXPECT_TRUE(std::isnan(
-          TS::evaluate_functional(domain, locator, source(patches), std::vector<Point_2>{far})
+          TS::evaluate_functional(network(domain, patches), locator, std::vector<Point_2>{far})
               .front()));
     }
     if (exact) {
@@ -726,15 +740,15 @@ TYPED_TEST(Output, OutsideModesUseTheNearestBoundaryPoint) {
       {Point_2(FT(1000), FT(-3000)), Point_2(3, 0)}};
   for (const auto& [p, q] : cases) {
     SCOPED_TRACE(::testing::Message() << p);
-    EXPECT_FALSE(TS::evaluate_jet(ring, locator, source(patches), p).has_value());
+    EXPECT_FALSE(TS::evaluate_jet(network(ring, patches), locator, p).has_value());
     const auto nearest = locator.nearest_boundary_point(p);
     ASSERT_TRUE(nearest.has_value());
     EXPECT_EQ(nearest->point, q);
     const TS::Point_jet<FT> at_q = polynomial_jet(polynomial, q);
-    const auto n = TS::evaluate_jet(ring, locator, source(patches), p, TS::Outside::Nearest);
+    const auto n = TS::evaluate_jet(network(ring, patches), locator, p, TS::Outside::Nearest);
     ASSERT_TRUE(n.has_value());
     EXPECT_TRUE(same_jet(*n, at_q, exact, 1e3));
-    const auto l = TS::evaluate_jet(ring, locator, source(patches), p, TS::Outside::Linear);
+    const auto l = TS::evaluate_jet(network(ring, patches), locator, p, TS::Outside::Linear);
     ASSERT_TRUE(l.has_value());
     TS::Point_jet<FT> linear = at_q;
     const FT extrapolated =
@@ -744,7 +758,7 @@ TYPED_TEST(Output, OutsideModesUseTheNearestBoundaryPoint) {
     EXPECT_TRUE(same_jet(*l, linear, exact, 1e7));
     // values only: the extrapolation still uses the gradient
     const auto l0 =
-        TS::evaluate_jets(ring, locator, source(patches), {p}, TS::Outside::Linear, 0).front();
+        TS::evaluate_jets(network(ring, patches), locator, {p}, TS::Outside::Linear, 0).front();
     ASSERT_TRUE(l0.has_value());
     EXPECT_TRUE(same_value(l0->value, extrapolated, exact, 1e-8, 1e7));
     EXPECT_EQ(l0->gradient[0], FT(0));
@@ -800,7 +814,6 @@ void check_mesh_structure(const Planar_domain<K>& domain, int levels, const Mesh
   EXPECT_EQ(mesh.number_of_faces(), F * n * n);
   EXPECT_EQ(statistics.vertices, mesh.number_of_vertices());
   EXPECT_EQ(statistics.faces, mesh.number_of_faces());
-  EXPECT_GE(statistics.seconds, 0.0);
   EXPECT_TRUE(mesh.is_valid(false));
   EXPECT_EQ(border_halfedges(mesh), domain.number_of_boundary_edges() * n);
   for (auto v : mesh.vertices())
@@ -831,7 +844,7 @@ TYPED_TEST(Output, TessellateFunctionalMatchesThePolynomial) {
       SCOPED_TRACE(name + " level " + std::to_string(levels));
       Mesh mesh;
       const TS::Tessellation_statistics statistics =
-          TS::tessellate(domain, source(patches), levels, mesh);
+          TS::tessellate(network(domain, patches), levels, mesh);
       check_mesh_structure(domain, levels, mesh, statistics);
       auto [normals, has_normals] = mesh.property_map<Mesh_vertex, Epick::Vector_3>("v:normal");
       auto [gaussian, has_gaussian] =
@@ -887,7 +900,7 @@ TYPED_TEST(Output, TessellateParametricEnneper) {
   const auto patches = patches_of(domain, enneper);
   const int levels = 2;
   Mesh mesh;
-  const auto statistics = TS::tessellate(domain, source(patches), levels, mesh);
+  const auto statistics = TS::tessellate(network(domain, patches), levels, mesh);
   // the first V vertices are at F(domain vertex), not at the domain vertex: check counts only
   const std::size_t n = 4;
   EXPECT_EQ(statistics.vertices, domain.number_of_vertices() + domain.number_of_edges() * (n - 1) +
@@ -950,9 +963,9 @@ TYPED_TEST(Output, TessellateAgreesWithSurfaceCurvatureForAnyDegree) {
     for (int kind = 0; kind < 2; ++kind) {
       Mesh mesh;
       if (kind == 0)
-        TS::tessellate(domain, source(functional), levels, mesh);
+        TS::tessellate(network(domain, functional), levels, mesh);
       else
-        TS::tessellate(domain, source(parametric), levels, mesh);
+        TS::tessellate(network(domain, parametric), levels, mesh);
       const auto normals = mesh.property_map<Mesh_vertex, Epick::Vector_3>("v:normal").first;
       const auto gaussian = mesh.property_map<Mesh_vertex, double>("v:gaussian_curvature").first;
       const auto mean = mesh.property_map<Mesh_vertex, double>("v:mean_curvature").first;
@@ -1022,10 +1035,10 @@ TYPED_TEST(Output, TessellateRejectsBadLevels) {
   Random_rationals random(1);
   const auto patches = patches_of(domain, random.polynomial<K>(5));
   Mesh mesh;
-  EXPECT_THROW(TS::tessellate(domain, source(patches), -1, mesh), TS::Invalid_input);
-  EXPECT_THROW(TS::tessellate(domain, source(patches), 11, mesh), TS::Invalid_input);
+  EXPECT_THROW(TS::tessellate(network(domain, patches), -1, mesh), TS::Invalid_input);
+  EXPECT_THROW(TS::tessellate(network(domain, patches), 11, mesh), TS::Invalid_input);
   // level 0 gives the domain triangles themselves
-  TS::tessellate(domain, source(patches), 0, mesh);
+  TS::tessellate(network(domain, patches), 0, mesh);
   EXPECT_EQ(mesh.number_of_faces(), domain.number_of_faces());
   EXPECT_EQ(mesh.number_of_vertices(), domain.number_of_vertices());
 }
@@ -1035,8 +1048,8 @@ TEST(Tessellate, ReplacesThePreviousMeshContent) {
   Random_rationals random(2);
   const auto patches = patches_of(domain, random.polynomial<Epick>(5));
   Mesh mesh;
-  TS::tessellate(domain, source(patches), 2, mesh);
-  const auto statistics = TS::tessellate(domain, source(patches), 1, mesh);
+  TS::tessellate(network(domain, patches), 2, mesh);
+  const auto statistics = TS::tessellate(network(domain, patches), 1, mesh);
   EXPECT_EQ(mesh.number_of_faces(), domain.number_of_faces() * 4);
   EXPECT_EQ(statistics.faces, mesh.number_of_faces());
   EXPECT_TRUE(mesh.is_valid(false));
@@ -1070,7 +1083,7 @@ Mesh sample_mesh() {
   Random_rationals random(4);
   const auto patches = patches_of(domain, random.polynomial<Epick>(5));
   Mesh mesh;
-  TS::tessellate(domain, source(patches), 2, mesh);
+  TS::tessellate(network(domain, patches), 2, mesh);
   return mesh;
 }
 

@@ -3,6 +3,8 @@
 // square, a hemisphere, and polynomial patches tessellated with their exact curvature.
 
 #include "render/control_net.h"
+
+#include <CGAL/Triangular_spline/Patch_network.h>
 #include "render/render.h"
 #include "render/surface_mesh_adapter.h"
 
@@ -104,8 +106,7 @@ Surface_mesh quadratic_patch_mesh(double a, double b, double c) {
     patches.push_back(p.to_bezier(2, domain.point(t[0]), domain.point(t[1]), domain.point(t[2])));
   }
   Surface_mesh mesh;
-  TS::tessellate(
-      domain, [&patches](std::uint32_t f) { return patches[f]; }, 4, mesh);
+  TS::tessellate(TS::Patch_network<K>(domain, patches), 4, mesh);
   return mesh;
 }
 
@@ -386,8 +387,10 @@ TEST(Render, ControlNetOfOnePatchAndTwoPatches) {
   const K::Point_2 r(0, 0), s(1, 0), t(0, 1), u(1, 1);
   const std::vector<TS::Bezier_triangle<K>> patches{p.to_bezier(5, r, s, t),
                                                     p.to_bezier(5, s, u, t)};
-  auto source = [&patches](std::size_t f) -> const TS::Bezier_triangle<K>& { return patches[f]; };
-  const R::Net one = R::control_net(1, source);
+  const TS::Patch_network<K> single(TS::Planar_domain<K>({r, s, t}, {{{0, 1, 2}}}), {patches[0]});
+  const TS::Patch_network<K> both(TS::Planar_domain<K>({r, s, t, u}, {{{0, 1, 2}}, {{1, 3, 2}}}),
+                                  patches);
+  const R::Net one = R::control_net(single);
   ASSERT_EQ(one.points.size(), 21u);
   EXPECT_EQ(one.segments.size(), 45u);
   int roles[4] = {0, 0, 0, 0};
@@ -409,11 +412,11 @@ TEST(Render, ControlNetOfOnePatchAndTwoPatches) {
              std::abs(point.position[1] - expected[1]) < 1e-15 && point.position[2] == expected[2]);
   EXPECT_TRUE(found);
   // The shared edge's 6 points and 5 segments appear once.
-  const R::Net two = R::control_net(2, source);
+  const R::Net two = R::control_net(both);
   EXPECT_EQ(two.points.size(), 36u);
   EXPECT_EQ(two.segments.size(), 85u);
   // A status callback is used as given.
-  const R::Net known = R::control_net(1, source, [](std::size_t, const TS::Multi_index& i) {
+  const R::Net known = R::control_net(single, [](std::size_t, const TS::Multi_index& i) {
     return i.i == 5 ? R::Point_status::Prescribed : R::Point_status::Propagated;
   });
   int prescribed = 0;

@@ -24,10 +24,30 @@ namespace Triangular_spline {
 
 namespace internal {
 
-// The patch type returned (by value or by reference) by a patch source.
-template <class PatchSource, class Index>
-using Patch_of =
-    std::remove_cv_t<std::remove_reference_t<std::invoke_result_t<PatchSource&, Index>>>;
+// The patch type of a TriangularSplineNetwork.
+template <class Network>
+using Network_patch_t =
+    std::remove_cv_t<std::remove_reference_t<decltype(std::declval<const Network&>().patch(
+        std::declval<typename Network::Index>()))>>;
+
+// The value type of a TriangularSplineNetwork's patches.
+template <class Network>
+using Network_value_t = typename Network_patch_t<Network>::Value_type;
+
+// A patch source reading the network (by reference when the network returns references).
+template <class Network>
+auto patch_source(const Network& network) {
+  return [&network](typename Network::Index f) -> decltype(auto) { return network.patch(f); };
+}
+
+// The locator must number the faces as the network's domain does: built on it, or on an
+// identical copy (checked cheaply).
+template <class Network, class GeomTraits>
+bool is_locator_of(const Network& network, const Domain_locator<GeomTraits>& locator) {
+  return &locator.domain() == &network.domain() ||
+         (locator.domain().number_of_faces() == network.domain().number_of_faces() &&
+          locator.domain().number_of_vertices() == network.domain().number_of_vertices());
+}
 
 // Converts barycentric weights w.r.t. the vertices of a domain face (face(f) order) into
 // weights w.r.t. the vertices of the patch of that face, which may list the same three
@@ -93,13 +113,15 @@ private:
   bool m_matched = true;
 };
 
-template <class GeomTraits, class PatchSource, class Callback>
-void for_each_location(const Planar_domain<GeomTraits>& domain,
-                       const Domain_locator<GeomTraits>& locator, PatchSource& patch,
+// Locates each query and calls callback(q, &value), or callback(q, nullptr) outside.
+template <class Network, class GeomTraits, class Callback>
+void for_each_location(const Network& network, const Domain_locator<GeomTraits>& locator,
                        const std::vector<typename GeomTraits::Point_2>& queries,
                        Callback callback) {
-  CGAL_precondition(&locator.domain() == &domain);
-  using Patch = Patch_of<PatchSource, typename Planar_domain<GeomTraits>::Index>;
+  CGAL_precondition(is_locator_of(network, locator));
+  using Patch = Network_patch_t<Network>;
+  const auto& domain = network.domain();
+  auto patch = patch_source(network);
   for (std::size_t q = 0; q < queries.size(); ++q) {
     const auto location = locator.locate_snapped(queries[q]);
     if (!location) {
@@ -129,34 +151,28 @@ void for_each_location(const Planar_domain<GeomTraits>& domain,
   order). Points on an edge or at a vertex are evaluated in one incident patch: for a
   continuous spline every incident patch gives the same value.
 
-  \tparam GeomTraits a model of `Kernel`
-  \tparam PatchSource a callable with `patch(f)` returning (by value or by reference) the
-  `Bezier_triangle<GeomTraits, GeomTraits::FT>` of face `f` of `domain`, e.g. a lambda
-  calling the spline's `patch(f)`
-  \param domain the domain triangulation
-  \param locator a locator built on `domain`
-  \param patch the patch source
+  \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork` with scalar values
+  \param network the spline
+  \param locator a locator built on `network.domain()` (or an identical domain)
   \param queries the query points
   \return one value per query, in input order: the height converted to `double`
   (computed exactly first when `FT` is exact), or a quiet NaN where the query is outside
   the domain or in a hole (beyond the snapping tolerance), or not finite
-  \pre `locator` was built on `domain`
+  \pre `locator` was built on `network.domain()` or an identical domain
 */
-template <class GeomTraits, class PatchSource>
-std::vector<double> evaluate_functional(const Planar_domain<GeomTraits>& domain,
-                                        const Domain_locator<GeomTraits>& locator,
-                                        PatchSource patch,
-                                        const std::vector<typename GeomTraits::Point_2>& queries) {
-  using Patch = internal::Patch_of<PatchSource, typename Planar_domain<GeomTraits>::Index>;
-  using Value = typename Patch::Value_type;
+template <class TriangularSplineNetwork>
+std::vector<double> evaluate_functional(
+    const TriangularSplineNetwork& network,
+    const Domain_locator<typename TriangularSplineNetwork::Geom_traits>& locator,
+    const std::vector<typename TriangularSplineNetwork::Geom_traits::Point_2>& queries) {
+  using Value = internal::Network_value_t<TriangularSplineNetwork>;
   static_assert(Value_traits<Value>::dimension == 1,
                 "evaluate_functional() needs functional (scalar) patches; use evaluate_at()");
   std::vector<double> values(queries.size(), std::numeric_limits<double>::quiet_NaN());
-  internal::for_each_location(domain, locator, patch, queries,
-                              [&](std::size_t q, const Value* value) {
-                                if (value)
-                                  values[q] = CGAL::to_double(*value);
-                              });
+  internal::for_each_location(network, locator, queries, [&](std::size_t q, const Value* value) {
+    if (value)
+      values[q] = CGAL::to_double(*value);
+  });
   return values;
 }
 
@@ -167,25 +183,25 @@ std::vector<double> evaluate_functional(const Planar_domain<GeomTraits>& domain,
 
   Works as `evaluate_functional()` but returns the exact patch values (`FT` for a
   functional spline, `Vector_3` for a parametric one).
-  \tparam GeomTraits a model of `Kernel`
-  \tparam PatchSource a callable with `patch(f)` returning the `Bezier_triangle` of face `f`
+  \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork`
+  \param network the spline
+  \param locator a locator built on `network.domain()` (or an identical domain)
+  \param queries the query points
   \return one entry per query, in input order: the value, or `std::nullopt` where the query
   is outside the domain, in a hole, or not finite
-  \pre `locator` was built on `domain`
+  \pre `locator` was built on `network.domain()` or an identical domain
 */
-template <class GeomTraits, class PatchSource>
-auto evaluate_at(const Planar_domain<GeomTraits>& domain, const Domain_locator<GeomTraits>& locator,
-                 PatchSource patch, const std::vector<typename GeomTraits::Point_2>& queries)
-    -> std::vector<std::optional<typename internal::Patch_of<
-        PatchSource, typename Planar_domain<GeomTraits>::Index>::Value_type>> {
-  using Patch = internal::Patch_of<PatchSource, typename Planar_domain<GeomTraits>::Index>;
-  using Value = typename Patch::Value_type;
+template <class TriangularSplineNetwork>
+std::vector<std::optional<internal::Network_value_t<TriangularSplineNetwork>>>
+evaluate_at(const TriangularSplineNetwork& network,
+            const Domain_locator<typename TriangularSplineNetwork::Geom_traits>& locator,
+            const std::vector<typename TriangularSplineNetwork::Geom_traits::Point_2>& queries) {
+  using Value = internal::Network_value_t<TriangularSplineNetwork>;
   std::vector<std::optional<Value>> values(queries.size());
-  internal::for_each_location(domain, locator, patch, queries,
-                              [&](std::size_t q, const Value* value) {
-                                if (value)
-                                  values[q] = *value;
-                              });
+  internal::for_each_location(network, locator, queries, [&](std::size_t q, const Value* value) {
+    if (value)
+      values[q] = *value;
+  });
   return values;
 }
 
@@ -194,21 +210,14 @@ auto evaluate_at(const Planar_domain<GeomTraits>& domain, const Domain_locator<G
   \brief evaluates a spline at one point: the value, or `std::nullopt` outside the domain
   (see the overload for many points).
 */
-template <class GeomTraits, class PatchSource>
-auto evaluate_at(const Planar_domain<GeomTraits>& domain, const Domain_locator<GeomTraits>& locator,
-                 PatchSource patch, const typename GeomTraits::Point_2& query)
-    -> std::optional<typename internal::Patch_of<
-        PatchSource, typename Planar_domain<GeomTraits>::Index>::Value_type> {
-  using Patch = internal::Patch_of<PatchSource, typename Planar_domain<GeomTraits>::Index>;
-  using Value = typename Patch::Value_type;
-  std::optional<Value> result;
-  internal::for_each_location(domain, locator, patch,
-                              std::vector<typename GeomTraits::Point_2>{query},
-                              [&](std::size_t, const Value* value) {
-                                if (value)
-                                  result = *value;
-                              });
-  return result;
+template <class TriangularSplineNetwork>
+std::optional<internal::Network_value_t<TriangularSplineNetwork>>
+evaluate_at(const TriangularSplineNetwork& network,
+            const Domain_locator<typename TriangularSplineNetwork::Geom_traits>& locator,
+            const typename TriangularSplineNetwork::Geom_traits::Point_2& query) {
+  return evaluate_at(network, locator,
+                     std::vector<typename TriangularSplineNetwork::Geom_traits::Point_2>{query})
+      .front();
 }
 
 /*!
@@ -243,32 +252,30 @@ enum class Outside {
   Every result is computed in `FT`: exact with `CGAL::Exact_rational`, rounded with
   `double` (use `CGAL::to_double()` on the members to print them).
 
-  \tparam GeomTraits a model of `Kernel`
-  \tparam PatchSource a callable with `patch(f)` returning (by value or by reference) the
-  `Bezier_triangle` of face `f` of `domain`
-  \param domain the domain triangulation
-  \param locator a locator built on `domain`
-  \param patch the patch source
+  \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork`
+  \param network the spline
+  \param locator a locator built on `network.domain()` (or an identical domain)
   \param queries the query points
   \param outside what to return outside the domain
   \param order the highest derivative order wanted (0, 1 or 2); higher derivatives are zero
   and are not computed
   \return one entry per query, in input order: the jet, or `std::nullopt` where the query is
   not finite, or outside the domain with `Outside::No_value`
-  \pre `locator` was built on `domain`
+  \pre `locator` was built on `network.domain()` or an identical domain
 */
-template <class GeomTraits, class PatchSource>
-auto evaluate_jets(const Planar_domain<GeomTraits>& domain,
-                   const Domain_locator<GeomTraits>& locator, PatchSource patch,
-                   const std::vector<typename GeomTraits::Point_2>& queries,
-                   Outside outside = Outside::No_value, int order = 2)
-    -> std::vector<std::optional<Point_jet<typename internal::Patch_of<
-        PatchSource, typename Planar_domain<GeomTraits>::Index>::Value_type>>> {
-  CGAL_precondition(&locator.domain() == &domain);
-  using Index = typename Planar_domain<GeomTraits>::Index;
-  using Patch = internal::Patch_of<PatchSource, Index>;
+template <class TriangularSplineNetwork>
+std::vector<std::optional<Point_jet<internal::Network_value_t<TriangularSplineNetwork>>>>
+evaluate_jets(const TriangularSplineNetwork& network,
+              const Domain_locator<typename TriangularSplineNetwork::Geom_traits>& locator,
+              const std::vector<typename TriangularSplineNetwork::Geom_traits::Point_2>& queries,
+              Outside outside = Outside::No_value, int order = 2) {
+  CGAL_precondition(internal::is_locator_of(network, locator));
+  using GeomTraits = typename TriangularSplineNetwork::Geom_traits;
+  using Patch = internal::Network_patch_t<TriangularSplineNetwork>;
   using Value = typename Patch::Value_type;
   using FT = typename GeomTraits::FT;
+  const auto& domain = network.domain();
+  auto patch = internal::patch_source(network);
   std::vector<std::optional<Point_jet<Value>>> jets(queries.size());
   const auto jet_at = [&](const typename Domain_locator<GeomTraits>::Location& location,
                           int jet_order) {
@@ -310,14 +317,14 @@ auto evaluate_jets(const Planar_domain<GeomTraits>& domain,
   \brief evaluates the value, gradient and Hessian of a spline at one point, locating
   included (see the overload for many points).
 */
-template <class GeomTraits, class PatchSource>
-auto evaluate_jet(const Planar_domain<GeomTraits>& domain,
-                  const Domain_locator<GeomTraits>& locator, PatchSource patch,
-                  const typename GeomTraits::Point_2& query, Outside outside = Outside::No_value,
-                  int order = 2)
-    -> std::optional<Point_jet<typename internal::Patch_of<
-        PatchSource, typename Planar_domain<GeomTraits>::Index>::Value_type>> {
-  return evaluate_jets(domain, locator, patch, std::vector<typename GeomTraits::Point_2>{query},
+template <class TriangularSplineNetwork>
+std::optional<Point_jet<internal::Network_value_t<TriangularSplineNetwork>>>
+evaluate_jet(const TriangularSplineNetwork& network,
+             const Domain_locator<typename TriangularSplineNetwork::Geom_traits>& locator,
+             const typename TriangularSplineNetwork::Geom_traits::Point_2& query,
+             Outside outside = Outside::No_value, int order = 2) {
+  return evaluate_jets(network, locator,
+                       std::vector<typename TriangularSplineNetwork::Geom_traits::Point_2>{query},
                        outside, order)
       .front();
 }

@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -30,12 +29,11 @@ namespace Triangular_spline {
 
 /*!
   \ingroup PkgTriangularSplineSplines
-  \brief the size of a tessellation and the time it took.
+  \brief the size of a tessellation.
 */
 struct Tessellation_statistics {
   std::size_t vertices = 0; ///< number of mesh vertices
   std::size_t faces = 0;    ///< number of mesh triangles
-  double seconds = 0;       ///< wall-clock time of `tessellate()`
 };
 
 namespace internal {
@@ -172,30 +170,28 @@ void add_grid_face(Mesh& mesh, Vertex_index a, Vertex_index b, Vertex_index c) {
   `CGAL::Surface_mesh::clear()` is called first, so the mesh's previous content and user
   property maps are removed.
 
-  \tparam GeomTraits a model of `Kernel`
-  \tparam PatchSource a callable with `patch(f)` returning (by value or by reference) the
-  `Bezier_triangle<GeomTraits, Value>` of face `f` of `domain`, with `Value` either
-  `GeomTraits::FT` (functional) or `GeomTraits::Vector_3` (parametric); its vertices are
-  the triangle's vertices in any order
+  \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork` whose values are
+  either `Geom_traits::FT` (functional) or `Geom_traits::Vector_3` (parametric)
   \tparam Mesh `CGAL::Surface_mesh<Point>` whose `Point` is a 3D point of a CGAL kernel,
   typically `CGAL::Exact_predicates_inexact_constructions_kernel::Point_3`
 
-  \param domain the domain triangulation
-  \param patch the patch source
+  \param network the spline
   \param levels the number \f$L\f$ of uniform 4-splits, from 0 (the domain triangles) to 10
   \param mesh the output mesh
-  \return the numbers of vertices and faces created and the time taken
+  \return the numbers of vertices and faces created
   \throws Invalid_input if `levels` is outside [0, 10] or the mesh would exceed the index
   range of `Surface_mesh` (\f$2^{32}\f$ halfedges)
 */
-template <class GeomTraits, class PatchSource, class Mesh>
-Tessellation_statistics tessellate(const Planar_domain<GeomTraits>& domain, PatchSource patch,
-                                   int levels, Mesh& mesh) {
+template <class TriangularSplineNetwork, class Mesh>
+Tessellation_statistics tessellate(const TriangularSplineNetwork& network, int levels, Mesh& mesh) {
+  using GeomTraits = typename TriangularSplineNetwork::Geom_traits;
   using Domain = Planar_domain<GeomTraits>;
   using Index = typename Domain::Index;
   using FT = typename GeomTraits::FT;
   using Point_2 = typename GeomTraits::Point_2;
-  using Patch = internal::Patch_of<PatchSource, Index>;
+  using Patch = internal::Network_patch_t<TriangularSplineNetwork>;
+  const Domain& domain = network.domain();
+  auto patch = internal::patch_source(network);
   using Value = typename Patch::Value_type;
   using Point_3 = typename internal::Surface_mesh_point<Mesh>::type;
   using Vector_3 = typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3;
@@ -204,7 +200,6 @@ Tessellation_statistics tessellate(const Planar_domain<GeomTraits>& domain, Patc
   static_assert(dimension == 1 || dimension == 3,
                 "tessellate() needs functional (scalar) or 3D parametric patches");
 
-  const auto start = std::chrono::steady_clock::now();
   if (levels < 0 || levels > 10)
     throw Invalid_input("tessellate: the number of levels must be between 0 and 10, got " +
                         std::to_string(levels));
@@ -314,8 +309,6 @@ Tessellation_statistics tessellate(const Planar_domain<GeomTraits>& domain, Patc
   Tessellation_statistics statistics;
   statistics.vertices = mesh.number_of_vertices();
   statistics.faces = mesh.number_of_faces();
-  statistics.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return statistics;
 }
 

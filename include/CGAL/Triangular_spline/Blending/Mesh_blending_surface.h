@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -113,7 +112,6 @@ struct Blending_tessellation_statistics {
   std::size_t singular_points = 0;   ///< vertices where the surface is singular (no normal)
   double min_gaussian_curvature = 0; ///< smallest Gaussian curvature at a vertex
   double max_gaussian_curvature = 0; ///< largest Gaussian curvature at a vertex
-  double seconds = 0;                ///< wall-clock time
 };
 
 namespace internal {
@@ -618,7 +616,6 @@ public:
     using Out = CGAL::Surface_mesh<OutPoint>;
     using Out_vector = typename CGAL::Kernel_traits<OutPoint>::Kernel::Vector_3;
     using Out_vertex = typename Out::Vertex_index;
-    const auto start = std::chrono::steady_clock::now();
     if (resolution < 1 || resolution > 1024)
       throw Invalid_input("blending: the tessellation resolution must be in [1, 1024], got " +
                           std::to_string(resolution));
@@ -771,7 +768,6 @@ public:
     if (stats.singular_points == out.number_of_vertices())
       stats.min_gaussian_curvature = stats.max_gaussian_curvature =
           std::numeric_limits<double>::quiet_NaN();
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
   }
 

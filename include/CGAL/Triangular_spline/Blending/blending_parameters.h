@@ -5,6 +5,7 @@
 #define CGAL_TRIANGULAR_SPLINE_BLENDING_BLENDING_PARAMETERS_H
 
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
+#include <CGAL/Triangular_spline/internal/named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Surface_mesh.h>
@@ -53,23 +54,6 @@ enum least_interpolant_tolerance_t { least_interpolant_tolerance };
 */
 namespace parameters {
 
-// so that `parameters::default_values()` (and any CGAL parameter) still resolves inside
-// CGAL::Triangular_spline, where this namespace hides CGAL::parameters
-using namespace CGAL::parameters;
-
-// Both forms of a parameter of ours: `NAME(value)` starts a pack, `NAME(value, np)` appends to
-// `np` (as CGAL's own macro does for its members).
-#define CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(NAME, TYPE)                                         \
-  inline Named_function_parameters<TYPE, internal_np::NAME##_t> NAME(TYPE value) {                 \
-    return Named_function_parameters<TYPE, internal_np::NAME##_t>(value);                          \
-  }                                                                                                \
-  template <class T, class Tag, class Base>                                                        \
-  Named_function_parameters<TYPE, internal_np::NAME##_t, Named_function_parameters<T, Tag, Base>>  \
-  NAME(TYPE value, const Named_function_parameters<T, Tag, Base>& np) {                            \
-    return Named_function_parameters<TYPE, internal_np::NAME##_t,                                  \
-                                     Named_function_parameters<T, Tag, Base>>(value, np);          \
-  }
-
 #ifndef DOXYGEN_RUNNING // documented in the namespace and in blending_options()
 CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(blending_order, int)
 CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(blending_variant, Blending_variant)
@@ -78,7 +62,6 @@ CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(least_squares_degree, int)
 CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(normals_degree, int)
 CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(least_interpolant_tolerance, double)
 #endif
-#undef CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER
 
 } // namespace parameters
 

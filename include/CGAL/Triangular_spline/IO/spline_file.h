@@ -8,6 +8,7 @@
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
 #include <CGAL/Triangular_spline/internal/text.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
+#include <CGAL/Triangular_spline/Patch_network.h>
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/exceptions.h>
@@ -33,18 +34,19 @@ namespace Triangular_spline {
 /*!
   \ingroup PkgTriangularSplineIO
   \brief the contents of a spline file: the domain triangulation and one Bézier patch per
-  face, as returned by `read_spline_file()`.
+  face (`patch(f)` is over the face's vertices in the file's order, which may differ from
+  `domain().face(f)` by a reorientation), as returned by `read_spline_file()`.
 
   \tparam GeomTraits a model of `Kernel`
   \tparam Value `GeomTraits::FT` (functional) or `GeomTraits::Vector_3` (parametric)
 */
 template <class GeomTraits, class Value = typename GeomTraits::FT>
-struct Spline_file {
-  /// the domain; its faces are the file's faces, reoriented counter-clockwise if needed
-  Planar_domain<GeomTraits> domain;
-  /// `patches[f]` is the patch of face `f`, over the face's vertices in the file's order
-  /// (which may differ from `domain.face(f)` by the reorientation)
-  std::vector<Bezier_triangle<GeomTraits, Value>> patches;
+struct Spline_file : Patch_network<GeomTraits, Value> {
+  /// takes the domain and the patches (see `Patch_network`) and the file's number type
+  Spline_file(Planar_domain<GeomTraits> domain,
+              std::vector<Bezier_triangle<GeomTraits, Value>> patches, bool exact)
+      : Patch_network<GeomTraits, Value>(std::move(domain), std::move(patches)),
+        exact_values(exact) {}
   /// the file declares `number_type exact` (else `double`: the values of a double build,
   /// whose continuity holds up to round-off only)
   bool exact_values = true;
@@ -208,33 +210,32 @@ private:
   `format_number()`: reduced fractions for an exact `FT` (nothing is lost), `%.17g` for
   `double`.
 
-  \tparam GeomTraits a model of `Kernel` whose `FT` is `double` or exact
-  \tparam Value `GeomTraits::FT` (dimension 1) or `GeomTraits::Vector_3` (dimension 3)
+  \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork` whose `FT` is `double`
+  or exact and whose values are `FT` (dimension 1) or `Vector_3` (dimension 3)
   \param output the stream to write to
-  \param domain the domain triangulation
-  \param patches_by_face `patches_by_face[f]` is the patch over face `f`: its three vertices
-  must be those of `domain.face(f)`, in any order; the face line records the patch's order.
-  \throws Invalid_input if the number of patches differs from the number of faces, the
-  degrees differ, or a patch is not over the vertices of its face
+  \param network the spline: the patch of face `f` must be over the vertices of
+  `domain().face(f)`, in any order; the face line records the patch's order.
+  \throws Invalid_input if the degrees differ or a patch is not over the vertices of its face
   \throws std::runtime_error if the stream fails
 */
-template <class GeomTraits, class Value>
-void write_spline_file(std::ostream& output, const Planar_domain<GeomTraits>& domain,
-                       const std::vector<Bezier_triangle<GeomTraits, Value>>& patches_by_face) {
+template <class TriangularSplineNetwork>
+void write_spline_file(std::ostream& output, const TriangularSplineNetwork& network) {
+  using GeomTraits = typename TriangularSplineNetwork::Geom_traits;
   using FT = typename GeomTraits::FT;
   using Index = typename Planar_domain<GeomTraits>::Index;
+  using Patch = std::decay_t<decltype(network.patch(Index(0)))>;
+  using Value = typename Patch::Value_type;
   using Traits = Value_traits<Value>;
   static_assert(Traits::dimension == 1 || Traits::dimension == 3,
                 "the spline file format holds dimension 1 or 3 control values");
+  const Planar_domain<GeomTraits>& domain = network.domain();
   const std::size_t F = domain.number_of_faces();
-  if (patches_by_face.size() != F)
-    throw Invalid_input("write_spline_file: " + std::to_string(patches_by_face.size()) +
-                        " patches for " + std::to_string(F) + " faces");
-  const int m = patches_by_face.front().degree();
+  const int m = F == 0 ? 0 : network.patch(0).degree();
   // The patch's vertex order, as domain vertex indices (exact point comparison).
   std::vector<std::array<Index, 3>> ordered(F);
   for (std::size_t f = 0; f < F; ++f) {
-    const Bezier_triangle<GeomTraits, Value>& patch = patches_by_face[f];
+    // binds to a stored patch, or extends the life of a computed one
+    const Patch& patch = network.patch(static_cast<Index>(f));
     if (patch.degree() != m)
       throw Invalid_input("write_spline_file: patch " + std::to_string(f) + " has degree " +
                           std::to_string(patch.degree()) + ", patch 0 has degree " +
@@ -270,7 +271,8 @@ void write_spline_file(std::ostream& output, const Planar_domain<GeomTraits>& do
   for (const auto& t : ordered)
     output << t[0] << " " << t[1] << " " << t[2] << "\n";
   output << "patches\n";
-  for (const auto& patch : patches_by_face) {
+  for (std::size_t f = 0; f < F; ++f) {
+    const Patch& patch = network.patch(static_cast<Index>(f));
     bool first = true;
     for (const Value& v : patch.control_points())
       for (int c = 0; c < Traits::dimension; ++c) {
@@ -416,7 +418,7 @@ Spline_file<GeomTraits, Value> read_spline_file(std::istream& input, const std::
       patches.emplace_back(m, domain.point(t[0]), domain.point(t[1]), domain.point(t[2]),
                            std::move(nets[f]));
     }
-    return Spline_file<GeomTraits, Value>{std::move(domain), std::move(patches), exact_file};
+    return Spline_file<GeomTraits, Value>(std::move(domain), std::move(patches), exact_file);
   } catch (const Invalid_input& e) {
     throw Invalid_input(source + ": " + e.what());
   }

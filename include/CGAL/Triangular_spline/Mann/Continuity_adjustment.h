@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -440,7 +439,6 @@ struct Network_adjustment {
   /// one entry per vertex whose corner regions had to be projected (none for a network
   /// whose patches already meet the \f$C^k\f$ conditions near every vertex)
   std::vector<Vertex_adjustment> vertices;
-  double seconds = 0; ///< wall-clock time
 
   /// returns the number of interior edges across which some control point moved
   std::size_t number_of_changed_edges() const {
@@ -727,7 +725,6 @@ Network_adjustment adjust_network(const Planar_domain<GeomTraits>& domain,
                                   double tolerance = 1e-9) {
   using Index = std::uint32_t;
   using FT = typename GeomTraits::FT;
-  const auto start = std::chrono::steady_clock::now();
   const std::string where = "network adjustment: ";
   const std::vector<std::array<int, 3>> local =
       internal::face_to_patch_vertices(domain, patches, where);
@@ -788,99 +785,7 @@ Network_adjustment adjust_network(const Planar_domain<GeomTraits>& domain,
       for (const Multi_index& index : touched_b)
         entry.touched.push_back({ef[1], index});
     }
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
-}
-
-/*!
-  \ingroup PkgTriangularSplineMann
-  \brief the \f$C^k\f$ verdict on one interior edge of a network.
-*/
-struct Edge_continuity {
-  std::uint32_t edge = 0;                        ///< edge index in the domain
-  std::array<std::uint32_t, 2> vertices{{0, 0}}; ///< its two vertices
-  int achieved_order = -1; ///< the largest \f$l \le k\f$ met (-1: not even \f$C^0\f$)
-  double residual = 0;     ///< largest residual of the conditions of order \f$\le k\f$
-};
-
-/*!
-  \ingroup PkgTriangularSplineMann
-  \brief a \f$C^k\f$ certificate of a network of patches: one verdict per interior edge
-  (the generalisation of `C1_certificate` to any order).
-*/
-struct Ck_certificate {
-  int order = 0;      ///< the order \f$k\f$ checked
-  bool exact = false; ///< decided with exact arithmetic
-  /// what was established (a proof only with exact arithmetic and every condition zero)
-  Certificate_verdict verdict = Certificate_verdict::failed;
-  bool certified = false;  ///< every interior edge meets \f$C^k\f$ up to the tolerance
-  double tolerance = 0;    ///< absolute residual tolerance used (0: only exact zeros)
-  double max_residual = 0; ///< largest residual over all edges
-  /// \f$\log_{10}\f$ of the largest residual, exact in magnitude (\f$-\infty\f$: all zero)
-  double max_residual_log10 = -std::numeric_limits<double>::infinity();
-  std::size_t nonzero_edges = 0; ///< edges with a nonzero residual
-  /// the lowest order met by an edge (\f$k\f$ when certified, -1 if some edge is not even
-  /// \f$C^0\f$); \f$k\f$ for a domain without interior edges
-  int lowest_order = 0;
-  std::size_t interior_edges = 0;     ///< number of edges checked
-  std::size_t failed_edges = 0;       ///< edges below \f$C^k\f$
-  double seconds = 0;                 ///< wall-clock time
-  std::vector<Edge_continuity> edges; ///< per interior edge, in edge order
-};
-
-/*!
-  \ingroup PkgTriangularSplineMann
-  \brief certifies that the patches over `domain` join with \f$C^k\f$ continuity across
-  every interior edge (`check_join()` with `Join_conditions::Extension` on each edge).
-
-  A condition holds when it is zero or its residual is at most `tolerance` (absolute,
-  compared exactly, as for `certify_C1()`); `verdict` is a proof only with an exact number
-  type and every condition zero.
-
-  \param domain the domain triangulation
-  \param patch a callable `patch(f)` returning the `Bezier_triangle` of face `f`
-  \param k the order, \f$0 \le k \le n\f$
-  \param tolerance largest absolute residual accepted (0: only exact zeros)
-*/
-template <class GeomTraits, class PatchSource>
-Ck_certificate certify_Ck(const Planar_domain<GeomTraits>& domain, const PatchSource& patch, int k,
-                          double tolerance = 0) {
-  using Index = typename Planar_domain<GeomTraits>::Index;
-  const auto start = std::chrono::steady_clock::now();
-  Ck_certificate certificate;
-  certificate.order = k;
-  certificate.exact = CGAL::Algebraic_structure_traits<typename GeomTraits::FT>::Is_exact::value;
-  certificate.tolerance = tolerance > 0 ? tolerance : 0;
-  certificate.lowest_order = k;
-  for (Index e = 0; e < domain.number_of_edges(); ++e) {
-    if (domain.is_boundary_edge(e))
-      continue;
-    const auto& ef = domain.edge_faces(e);
-    const Join_report report =
-        check_join(patch(ef[0]), patch(ef[1]), k, Join_conditions::Extension, tolerance);
-    Edge_continuity c;
-    c.edge = e;
-    c.vertices = domain.edge(e);
-    c.achieved_order = report.achieved_order;
-    c.residual = report.max_residual;
-    certificate.max_residual = (std::max)(certificate.max_residual, c.residual);
-    if (!(report.max_residual_log10 <= certificate.max_residual_log10))
-      certificate.max_residual_log10 = report.max_residual_log10;
-    certificate.lowest_order = (std::min)(certificate.lowest_order, c.achieved_order);
-    if (!report.holds)
-      ++certificate.failed_edges;
-    if (!std::all_of(report.conditions.begin(), report.conditions.end(),
-                     [](const Join_condition& j) { return j.zero; }))
-      ++certificate.nonzero_edges;
-    certificate.edges.push_back(c);
-  }
-  certificate.interior_edges = certificate.edges.size();
-  certificate.certified = certificate.failed_edges == 0;
-  certificate.verdict =
-      certificate_verdict(certificate.exact, certificate.failed_edges, certificate.nonzero_edges);
-  certificate.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return certificate;
 }
 
 } // namespace Triangular_spline

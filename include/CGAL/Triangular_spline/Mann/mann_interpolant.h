@@ -7,6 +7,7 @@
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/Mann/Continuity_adjustment.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
+#include <CGAL/Triangular_spline/Patch_network.h>
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Polynomial_surface.h>
 #include <CGAL/Triangular_spline/exceptions.h>
@@ -205,14 +206,19 @@ mann_c0_network(const Planar_domain<GeomTraits>& domain,
 
 /*!
   \ingroup PkgTriangularSplineMann
-  \brief Mann's interpolant: the patches and what the continuity adjustment moved.
+  \brief Mann's interpolant: the domain, the patches (`patch(f)` over the corners of face
+  `f` in `domain().face(f)` order, all of degree `degree()`) and what the continuity
+  adjustment moved.
+  \cgalModels `TriangularSplineNetwork`
 */
 template <class GeomTraits, class Value = typename GeomTraits::FT>
-struct Mann_interpolant {
-  int degree = 0;     ///< the patch degree \f$n\f$
-  int continuity = 0; ///< the order \f$k\f$ reached across every interior edge
-  /// `patches[f]` is the patch of face `f`, over its corners in `domain.face(f)` order
-  std::vector<Bezier_triangle<GeomTraits, Value>> patches;
+struct Mann_interpolant : Patch_network<GeomTraits, Value> {
+  /// takes the adjusted network, its order and what the adjustment moved
+  Mann_interpolant(Patch_network<GeomTraits, Value> network, int continuity,
+                   Network_adjustment adjustment)
+      : Patch_network<GeomTraits, Value>(std::move(network)), continuity(continuity),
+        adjustment(std::move(adjustment)) {}
+  int continuity = 0;            ///< the order \f$k\f$ reached across every interior edge
   Network_adjustment adjustment; ///< the control points moved from the \f$C^0\f$ network
 };
 
@@ -251,12 +257,9 @@ mann_interpolant(const Planar_domain<GeomTraits>& domain,
                         " needs degree at least 4k+1 = " +
                         std::to_string(minimum_degree_for_network_continuity(k)) + ", got " +
                         std::to_string(degree) + " (Mann 3.1)");
-  Mann_interpolant<GeomTraits, Value> result;
-  result.degree = degree;
-  result.continuity = k;
-  result.patches = mann_c0_network(domain, jets, degree);
-  result.adjustment = adjust_network(domain, result.patches, k, tolerance);
-  return result;
+  Patch_network<GeomTraits, Value> network(domain, mann_c0_network(domain, jets, degree));
+  Network_adjustment adjustment = adjust_network(network.domain(), network.patches(), k, tolerance);
+  return Mann_interpolant<GeomTraits, Value>(std::move(network), k, std::move(adjustment));
 }
 
 /*!

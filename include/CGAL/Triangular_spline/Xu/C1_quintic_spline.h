@@ -176,6 +176,7 @@ enum class Slot_kind {
   \tparam GeomTraits a model of `Kernel`
   \tparam Value `GeomTraits::FT` (heights over the plane) or `GeomTraits::Vector_3`
   (parametric surfaces)
+  \cgalModels `TriangularSplineNetwork`
 */
 template <class GeomTraits, class Value = typename GeomTraits::FT>
 class C1_quintic_spline {
@@ -421,6 +422,9 @@ public:
     }
     return changed;
   }
+
+  /// returns 5, the degree of the patches.
+  int degree() const { return 5; }
 
   /// returns the quintic patch of face `f` over (`face(f)[0]`, `face(f)[1]`, `face(f)[2]`).
   Patch patch(Index f) const {
