@@ -9,7 +9,7 @@
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/Xu/Spline_space.h>
 #include <CGAL/Triangular_spline/certify.h>
-#include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
+#include <CGAL/Triangular_spline/Xu/make_c1_quintic_spline.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 #include <CGAL/Triangular_spline/IO/mesh_io.h>
 
@@ -39,9 +39,14 @@ int main(int argc, char* argv[]) {
       TS::read_xyz<Kernel>(input, argc > 1 ? argv[1] : "embedded");
   auto [domain, heights] = TS::delaunay_domain(data);
 
-  // The plan: free control points and propagation rules; degenerate frames (and thin ones,
-  // whose weights would exceed the bound) are re-routed.
-  Spline spline(std::move(domain), TS::Corner_frame::Corner_and_two_stars);
+  // One call: the plan (free control points and propagation rules; degenerate frames, and
+  // thin ones whose weights would exceed the bound, re-routed) and the package's default fit:
+  // corners through the data, every other free point from the local polynomial (degree up to
+  // 5, chosen by cross-validation) of its nearest vertex where that polynomial resolves the
+  // data, from the least thin-plate energy where it does not; then propagation.
+  TS::Fit_statistics fit;
+  Spline spline =
+      TS::make_c1_quintic_spline(std::move(domain), heights, TS::parameters::fit_statistics(fit));
   std::cout << spline.domain().number_of_faces() << " triangles, "
             << spline.degenerate_frames().size() << " degenerate frames, "
             << spline.rerouted_frames().size() << " re-routed edge ends, "
@@ -54,11 +59,6 @@ int main(int argc, char* argv[]) {
                                                                         : " (dim S^1_5 unproven)");
   std::cout << ", largest propagation weight " << spline.max_propagation_weight() << "\n";
 
-  // The default fit of tspline c1: corners through the data, every other free point from
-  // the local polynomial (degree up to 5, chosen by cross-validation) of its nearest
-  // vertex where that polynomial resolves the data, from the least thin-plate energy where
-  // it does not; propagate.
-  const TS::Fit_statistics fit = TS::fit_vertex_data(spline, heights, TS::Fit::Adaptive, 5);
   std::cout << "local polynomial degrees 0..5 at";
   for (std::size_t count : fit.vertices_by_degree)
     std::cout << " " << count;

@@ -20,6 +20,7 @@
 #include <CGAL/Triangular_spline/certify.h>
 #include <CGAL/Triangular_spline/evaluate.h>
 #include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
+#include <CGAL/Triangular_spline/Xu/make_c1_quintic_spline.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 
 #include "report.h"
@@ -205,18 +206,21 @@ Json run(const C1_job& job, std::ostream& out) {
                       : job.fit == "energy"    ? TS::Fit::Minimal_energy
                       : job.fit == "adaptive"  ? TS::Fit::Adaptive
                                                : TS::Fit::Approximate;
-  progress("c1", "building the plan of " + std::to_string(domain.number_of_faces()) + " patches",
+  progress("c1",
+           "building the plan of " + std::to_string(domain.number_of_faces()) +
+               " patches, fitting and propagating",
            large);
-  Spline spline(std::move(domain), fit == TS::Fit::Approximate
-                                       ? TS::Corner_frame::Symmetric_stars
-                                       : TS::Corner_frame::Corner_and_two_stars);
-  timings.set("plan", clock.lap());
-  progress("c1", "fitting and propagating", large);
-  const TS::Fit_statistics fit_statistics = TS::fit_vertex_data(
-      spline, input.values, fit, job.degree,
-      job.degree_selection == "largest" ? TS::Degree_selection::Largest
-                                        : TS::Degree_selection::Cross_validation,
-      job.smoothing, input.gradients);
+  namespace TSP = TS::parameters;
+  TS::Fit_statistics fit_statistics;
+  const TS::Degree_selection selection = job.degree_selection == "largest"
+                                             ? TS::Degree_selection::Largest
+                                             : TS::Degree_selection::Cross_validation;
+  const auto outputs = TSP::smoothing(
+      job.smoothing, TSP::vertex_gradients(input.gradients, TSP::fit_statistics(fit_statistics)));
+  // The library chooses the corner frame the fit needs.
+  Spline spline = TS::make_c1_quintic_spline(
+      std::move(domain), input.values,
+      TSP::data_fit(fit, TSP::local_degree(job.degree, TSP::degree_selection(selection, outputs))));
   // Fitted in rescaled coordinates: back onto the data's own (exact, see map_domain()).
   if (input.y_exponent != 0)
     spline.map_domain(scaled_y(spline.domain(), -input.y_exponent));

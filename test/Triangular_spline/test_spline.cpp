@@ -15,6 +15,7 @@
 #include <CGAL/Triangular_spline/certify.h>
 #include <CGAL/Triangular_spline/evaluate.h>
 #include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
+#include <CGAL/Triangular_spline/Xu/make_c1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
 
 #include <algorithm>
@@ -1287,6 +1288,75 @@ TEST(MinimalEnergy, SmoothingTradesResidualsForEnergy) {
   EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::Local_polynomial, 3,
                                    TS::Degree_selection::Cross_validation, 1.0),
                TS::Invalid_input);
+}
+
+// The one-call entry point: the corner frame follows from the fit, the named parameters reach
+// fit_vertex_data(), the statistics come back, and bad combinations are refused as there.
+TEST(MakeC1QuinticSpline, ChoosesTheFrameAndPassesEveryParameter) {
+  namespace TSP = TS::parameters;
+  using K = Exact_kernel;
+  using FT = K::FT;
+  std::vector<K::Point_2> points;
+  for (const auto& p : jittered_grid(5, 7))
+    points.emplace_back(p.x(), p.y()); // exact copies of the doubles
+  const auto domain = delaunay_of<K>(points);
+  std::vector<FT> z;
+  std::vector<std::array<FT, 2>> gradients;
+  for (const auto& p : domain.points()) {
+    z.push_back(FT(p.x() * p.x() * p.y() - FT(3) * p.y() + FT(1, 7)));
+    gradients.push_back({{FT(FT(2) * p.x() * p.y()), FT(p.x() * p.x() - FT(3))}});
+  }
+  const auto throws_with = [](const auto& call, const std::string& text) {
+    try {
+      call();
+    } catch (const TS::Invalid_input& e) {
+      return std::string(e.what()).find(text) != std::string::npos;
+    }
+    return false;
+  };
+  // default: the adaptive fit of degree up to 5 with interpolated corners
+  TS::Fit_statistics statistics;
+  const auto made = TS::make_c1_quintic_spline(domain, z, TSP::fit_statistics(statistics));
+  C1_quintic_spline<K> by_hand(domain, Corner_frame::Corner_and_two_stars);
+  const TS::Fit_statistics expected = TS::fit_vertex_data(by_hand, z, Fit::Adaptive, 5);
+  EXPECT_EQ(made.corner_frame(), Corner_frame::Corner_and_two_stars);
+  EXPECT_EQ(made.values(), by_hand.values());
+  EXPECT_EQ(statistics.vertices_by_degree, expected.vertices_by_degree);
+  EXPECT_EQ(statistics.vertices_by_trust, expected.vertices_by_trust);
+  EXPECT_EQ(TS::certify_continuity(made, 1).verdict, TS::Certificate_verdict::proof);
+
+  // Xu's approximation propagates the corners
+  const auto approximate = TS::make_c1_quintic_spline(domain, z, TSP::data_fit(Fit::Approximate));
+  EXPECT_EQ(approximate.corner_frame(), Corner_frame::Symmetric_stars);
+
+  // every parameter arrives: local fit of degree 2 chosen by the largest rule, given gradients
+  const auto local = TS::make_c1_quintic_spline(
+      domain, z,
+      TSP::data_fit(Fit::Local_polynomial,
+                    TSP::local_degree(2, TSP::degree_selection(TS::Degree_selection::Largest,
+                                                               TSP::vertex_gradients(gradients)))));
+  C1_quintic_spline<K> local_by_hand(domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(local_by_hand, z, Fit::Local_polynomial, 2, TS::Degree_selection::Largest, 0,
+                      gradients);
+  EXPECT_EQ(local.values(), local_by_hand.values());
+  C1_quintic_spline<K> without_gradients(domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(without_gradients, z, Fit::Local_polynomial, 2,
+                      TS::Degree_selection::Largest);
+  EXPECT_NE(local.values(), without_gradients.values()); // the gradients were used
+
+  const auto smooth = TS::make_c1_quintic_spline(
+      domain, z, TSP::smoothing(0.5, TSP::data_fit(Fit::Minimal_energy)));
+  C1_quintic_spline<K> smooth_by_hand(domain, Corner_frame::Corner_and_two_stars);
+  TS::fit_vertex_data(smooth_by_hand, z, Fit::Minimal_energy, 3,
+                      TS::Degree_selection::Cross_validation, 0.5);
+  EXPECT_EQ(smooth.values(), smooth_by_hand.values());
+
+  // failures are those of fit_vertex_data(), with its messages
+  EXPECT_TRUE(throws_with([&] { TS::make_c1_quintic_spline(domain, z, TSP::smoothing(0.5)); },
+                          "smoothing"));
+  std::vector<FT> short_values(z.begin(), z.end() - 1);
+  EXPECT_TRUE(
+      throws_with([&] { TS::make_c1_quintic_spline(domain, short_values); }, "data values for"));
 }
 
 TEST(Adaptive, EqualsTheLocalFitOnResolvedData) {
