@@ -24,10 +24,10 @@ Json write_tessellated_mesh(const Domain& domain, const PatchSource& patch, int 
   const auto stats = CGAL::Triangular_spline::tessellate(domain, patch, levels, mesh);
   CGAL::Triangular_spline::write_mesh(path, mesh);
   Json m = Json::object();
-  m.set("path", path);
-  m.set("levels", levels);
-  m.set("vertices", stats.vertices);
-  m.set("faces", stats.faces);
+  m["path"] = path;
+  m["levels"] = levels;
+  m["vertices"] = stats.vertices;
+  m["faces"] = stats.faces;
   return m;
 }
 
