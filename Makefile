@@ -23,7 +23,7 @@ build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
 demo: build
-	$(BUILD_DIR)/src/tspline/tspline demo --output-dir out/demo
+	$(BUILD_DIR)/src/tspline/tspline demo --output out/demo
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) --no-tests=error

@@ -18,21 +18,21 @@ tspline="$BUILD_DIR/src/tspline/tspline"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$tspline" demo --output-dir "$work" >/dev/null
+"$tspline" demo --output "$work" >/dev/null
 
 mkdir -p "$fig"
 for mode in shaded curvature isophotes net; do
   cp "$work/demo_$mode.png" "$fig/tour_$mode.png"
 done
 # The curvature of the demo surface seen from above, with a fixed colour range.
-"$tspline" render --input "$work/demo.spline" --out "$fig/tour_curvature_top.png" \
+"$tspline" render --input "$work/demo.spline" --output "$fig/tour_curvature_top.png" \
   --mode curvature --view 0,90 --size 600x450 --range 4 >/dev/null
 
 # Curvature of exp(x) sin(2y) (negative everywhere, -1 <= K < 0) from 1000 scattered
 # points: the default adaptive fit, the minimal-energy fit, and the tangent-plane fit.
 for fit in adaptive energy tangent; do
-  "$tspline" c1 --input data/expsin_1000.xyz --fit "$fit" --save "$work/expsin_$fit.spline" >/dev/null
-  "$tspline" render --input "$work/expsin_$fit.spline" --out "$fig/expsin_curvature_$fit.png" \
+  "$tspline" c1 --input data/expsin_1000.xyz --fit "$fit" --output "$work/expsin_$fit.spline" >/dev/null
+  "$tspline" render --input "$work/expsin_$fit.spline" --output "$fig/expsin_curvature_$fit.png" \
     --mode curvature --view 0,90 --size 400x300 --range 1 >/dev/null
 done
 
@@ -45,18 +45,18 @@ fi
 
 # One figure for each of Mann's and Fang's sections of the manual.
 "$tspline" mann --input data/franke_100.xyz --mesh "$work/mann.ply" >/dev/null
-"$tspline" render --input "$work/mann.ply" --out "$fig/mann_franke.png" --size 480x360 >/dev/null
-"$tspline" blend --shape ellipsoid --order 2 --variant open --mesh "$work/ellipsoid.ply" >/dev/null
-"$tspline" render --input "$work/ellipsoid.ply" --out "$fig/fang_ellipsoid_curvature.png" \
+"$tspline" render --input "$work/mann.ply" --output "$fig/mann_franke.png" --size 480x360 >/dev/null
+"$tspline" blend --shape ellipsoid --order 2 --variant open --output "$work/ellipsoid.ply" >/dev/null
+"$tspline" render --input "$work/ellipsoid.ply" --output "$fig/fang_ellipsoid_curvature.png" \
   --mode curvature --size 480x360 >/dev/null
 # Where the curvature comes from (manual): the same ellipsoid with the colours saturating at
 # |K| = 0.3 (the true minimum is 0.25), with the thesis' vertex surfaces and with ours that
 # fit the neighbours' normals.
 for method in least normals; do
   "$tspline" blend --shape ellipsoid --vertex-surface $method --resolution 16 \
-    --mesh "$work/ellipsoid_$method.ply" >/dev/null
+    --output "$work/ellipsoid_$method.ply" >/dev/null
   "$tspline" render --input "$work/ellipsoid_$method.ply" --mode curvature --range 0.3 \
-    --view -35,20 --size 360x270 --out "$fig/fang_ellipsoid_low_$method.png" >/dev/null
+    --view -35,20 --size 360x270 --output "$fig/fang_ellipsoid_low_$method.png" >/dev/null
 done
 
 for picture in "$fig"/*.png; do

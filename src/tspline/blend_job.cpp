@@ -149,7 +149,7 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
     mesh = read_mesh(job.input, normals_in_file);
     source = job.input;
   }
-  timings.set("read", clock.lap());
+  timings["read"] = clock.lap();
 
   TS::Mesh_blending_options options;
   options.order = job.order;
@@ -169,12 +169,12 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
     throw TS::Invalid_input(source + ": " + e.what());
   }
   const TS::Mesh_blending_surface<Point_3>& surface = *built;
-  timings.set("build", clock.lap());
+  timings["build"] = clock.lap();
 
   const TS::Blending_continuity continuity = TS::measure_blending_continuity(surface, job.samples);
-  timings.set("measure_continuity", clock.lap());
+  timings["measure_continuity"] = clock.lap();
   const TS::Blending_curvature curvature = TS::measure_blending_curvature(surface, job.resolution);
-  timings.set("measure_curvature", clock.lap());
+  timings["measure_curvature"] = clock.lap();
 
   std::map<std::size_t, std::size_t> sides;
   for (std::size_t f = 0; f < surface.number_of_faces(); ++f)
@@ -183,65 +183,64 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
   for (std::size_t e = 0; e < surface.number_of_edges(); ++e)
     border_edges += surface.edge_sides(e).size() == 1 ? 1 : 0;
 
-  report.set("input", job.shape.empty() ? Json(job.input) : Json());
-  report.set("shape", job.shape.empty() ? Json() : Json(job.shape));
-  report.set("order", job.order);
-  report.set("variant", job.variant);
-  report.set("vertex_surface", job.vertex_surface == "lsq"       ? "least_squares"
-                               : job.vertex_surface == "normals" ? "least_squares_normals"
-                                                                 : "least");
+  report["input"] = job.shape.empty() ? Json(job.input) : Json();
+  report["shape"] = job.shape.empty() ? Json() : Json(job.shape);
+  report["order"] = job.order;
+  report["variant"] = job.variant;
+  report["vertex_surface"] = job.vertex_surface == "lsq"       ? "least_squares"
+                             : job.vertex_surface == "normals" ? "least_squares_normals"
+                                                               : "least";
   if (job.vertex_surface == "lsq")
-    report.set("least_squares_degree", job.least_squares_degree);
+    report["least_squares_degree"] = job.least_squares_degree;
   if (job.vertex_surface == "normals")
-    report.set("normals_degree", job.normals_degree);
-  report.set("vertices", surface.number_of_vertices());
-  report.set("edges", surface.number_of_edges());
-  report.set("border_edges", border_edges);
-  report.set("faces", surface.number_of_faces());
+    report["normals_degree"] = job.normals_degree;
+  report["vertices"] = surface.number_of_vertices();
+  report["edges"] = surface.number_of_edges();
+  report["border_edges"] = border_edges;
+  report["faces"] = surface.number_of_faces();
   Json by_size = Json::object();
   for (const auto& [n, count] : sides)
-    by_size.set(std::to_string(n), count);
-  report.set("faces_by_sides", by_size);
-  report.set("normals", surface.has_estimated_normals() ? "estimated" : "given");
-  report.set("folded_maps", surface.number_of_folded_maps());
-  report.set("measured_order", continuity.measured_order);
-  report.set("samples_per_edge", job.samples);
-  report.set("max_edge_jump", numbers(continuity.max_edge_jump));
-  report.set("max_vertex_jump", numbers(continuity.max_vertex_jump));
-  report.set("max_edge_inheritance_error", numbers(continuity.max_edge_inheritance_error));
-  report.set("max_normal_angle_jump_deg", continuity.max_normal_angle_jump_deg);
+    by_size[std::to_string(n)] = count;
+  report["faces_by_sides"] = by_size;
+  report["normals"] = surface.has_estimated_normals() ? "estimated" : "given";
+  report["folded_maps"] = surface.number_of_folded_maps();
+  report["measured_order"] = continuity.measured_order;
+  report["samples_per_edge"] = job.samples;
+  report["max_edge_jump"] = numbers(continuity.max_edge_jump);
+  report["max_vertex_jump"] = numbers(continuity.max_vertex_jump);
+  report["max_edge_inheritance_error"] = numbers(continuity.max_edge_inheritance_error);
+  report["max_normal_angle_jump_deg"] = continuity.max_normal_angle_jump_deg;
   Json interpolation = Json::object();
-  interpolation.set("position", continuity.max_position_error);
-  interpolation.set("normal_angle_deg", continuity.max_normal_error_deg);
-  report.set("max_interpolation_error", interpolation);
-  report.set("min_gaussian_curvature", curvature.min_gaussian);
-  report.set("max_gaussian_curvature", curvature.max_gaussian);
-  report.set("curvature_resolution", job.resolution);
-  report.set("singular_points", curvature.singular);
+  interpolation["position"] = continuity.max_position_error;
+  interpolation["normal_angle_deg"] = continuity.max_normal_error_deg;
+  report["max_interpolation_error"] = interpolation;
+  report["min_gaussian_curvature"] = curvature.min_gaussian;
+  report["max_gaussian_curvature"] = curvature.max_gaussian;
+  report["curvature_resolution"] = job.resolution;
+  report["singular_points"] = curvature.singular;
   Json gap = Json::object();
-  gap.set("delta", numbers({1e-2, 1e-3}));
-  gap.set("absolute", numbers({curvature.vertex_gap[0], curvature.vertex_gap[1]}));
-  gap.set("relative",
-          numbers({curvature.relative_vertex_gap[0], curvature.relative_vertex_gap[1]}));
-  report.set("vertex_curvature_gap", gap);
-  report.set("mesh_size", continuity.size);
+  gap["delta"] = numbers({1e-2, 1e-3});
+  gap["absolute"] = numbers({curvature.vertex_gap[0], curvature.vertex_gap[1]});
+  gap["relative"] = numbers({curvature.relative_vertex_gap[0], curvature.relative_vertex_gap[1]});
+  report["vertex_curvature_gap"] = gap;
+  report["mesh_size"] = continuity.size;
 
   TS::Blending_tessellation_statistics tessellation;
   if (!job.mesh.empty()) {
     Mesh tessellated;
     tessellation = surface.tessellate(tessellated, job.resolution);
-    timings.set("tessellate", clock.lap());
+    timings["tessellate"] = clock.lap();
     TS::write_mesh(job.mesh, tessellated);
-    timings.set("write_mesh", clock.lap());
+    timings["write_mesh"] = clock.lap();
     Json m = Json::object();
-    m.set("path", job.mesh);
-    m.set("resolution", job.resolution);
-    m.set("vertices", tessellation.vertices);
-    m.set("faces", tessellation.faces);
-    report.set("mesh", m);
+    m["path"] = job.mesh;
+    m["resolution"] = job.resolution;
+    m["vertices"] = tessellation.vertices;
+    m["faces"] = tessellation.faces;
+    report["mesh"] = m;
   }
-  timings.set("total", total.lap());
-  report.set("timings", timings);
+  timings["total"] = total.lap();
+  report["timings"] = timings;
 
   std::string faces_text;
   for (const auto& [n, count] : sides)
@@ -278,15 +277,8 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
   if (!job.mesh.empty())
     out << "  mesh: " << job.mesh << " (" << tessellation.vertices << " vertices, "
         << tessellation.faces << " triangles)\n";
-  if (!job.report.empty()) {
-    std::ofstream file(job.report);
-    if (!file)
-      throw std::runtime_error("cannot write '" + job.report + "'");
-    report.write(file);
-    file << '\n';
-    if (!file)
-      throw std::runtime_error("writing '" + job.report + "' failed");
-  }
+  if (!job.report.empty())
+    write_json_report(job.report, report);
   return report;
 }
 

@@ -176,7 +176,7 @@ Json run(const C1_job& job, std::ostream& out) {
                           !size_error;
   progress("c1", "reading and triangulating " + job.input, large_file);
   Input<K> input = read_input<K>(job.input, job.rescale, job.gradients);
-  timings.set("read_and_triangulate", clock.lap());
+  timings["read_and_triangulate"] = clock.lap();
   // About a second of work from here on: 10^5 triangles exact, 10^6 in double.
   const bool large = input.domain.number_of_faces() > (job.exact ? 20000u : 300000u);
   // Exact arithmetic runs at several thousand triangles per second (issue 12): say what to
@@ -197,7 +197,7 @@ Json run(const C1_job& job, std::ostream& out) {
   const auto original_frames = job.fix == "perturb"
                                    ? TS::find_degenerate_frames(input.domain)
                                    : TS::Degenerate_frame_analysis<std::uint32_t>();
-  timings.set("degenerate_frame_fix", clock.lap());
+  timings["degenerate_frame_fix"] = clock.lap();
 
   const TS::Fit fit = job.fit == "interpolate" ? TS::Fit::Interpolate
                       : job.fit == "tangent"   ? TS::Fit::Tangent_planes
@@ -224,7 +224,7 @@ Json run(const C1_job& job, std::ostream& out) {
   // Fitted in rescaled coordinates: back onto the data's own (exact, see map_domain()).
   if (input.y_exponent != 0)
     spline.map_domain(scaled_y(spline.domain(), -input.y_exponent));
-  timings.set("fit_and_propagate", clock.lap());
+  timings["fit_and_propagate"] = clock.lap();
 
   const auto& d = spline.domain();
   // Double builds: residuals are round-off, accepted up to 1e-10 of the largest control
@@ -238,7 +238,7 @@ Json run(const C1_job& job, std::ostream& out) {
            large);
   const TS::Continuity_certificate certificate = TS::certify_continuity(
       spline, 1, TS::parameters::residual_tolerance(job.exact ? 0 : 1e-10 * scale));
-  timings.set("certify", clock.lap());
+  timings["certify"] = clock.lap();
 
   std::optional<long long> morgan_scott = TS::morgan_scott_dimension(d);
   // The dimension from the rank of the C^1 conditions modulo a prime: an upper bound, which
@@ -248,7 +248,7 @@ Json run(const C1_job& job, std::ostream& out) {
   if (job.dimension) {
     progress("c1", "computing the rank of the C^1 conditions", large);
     dimension_bound = TS::spline_dimension_upper_bound(d);
-    timings.set("dimension", clock.lap());
+    timings["dimension"] = clock.lap();
   }
   const bool dimension_proven =
       dimension_bound && dimension_bound->upper_bound == spline.number_of_free_parameters();
@@ -329,76 +329,75 @@ Json run(const C1_job& job, std::ostream& out) {
     warnings.push_back("propagation weights reach " +
                        format_number(spline.max_propagation_weight()) +
                        ": control points multiply the data's errors by that much" + scale_hint);
-  timings.set("range_checks", clock.lap());
+  timings["range_checks"] = clock.lap();
 
   std::size_t numerical_frames = 0;
   for (const auto& f : spline.degenerate_frames())
     numerical_frames += f.numerical ? 1 : 0;
 
-  report.set("input", job.input.empty() ? std::string("demo") : job.input);
-  report.set("input_kind", input.kind);
-  report.set("number_type", job.exact ? "exact" : "double");
-  report.set("fit", job.fit);
-  report.set("fix", job.fix);
+  report["input"] = job.input.empty() ? std::string("demo") : job.input;
+  report["input_kind"] = input.kind;
+  report["number_type"] = job.exact ? "exact" : "double";
+  report["fit"] = job.fit;
+  report["fix"] = job.fix;
   if (job.rescale)
-    report.set("rescale_y_factor", std::ldexp(1.0, input.y_exponent));
-  report.set("gradients", job.gradients ? "given" : "estimated");
+    report["rescale_y_factor"] = std::ldexp(1.0, input.y_exponent);
+  report["gradients"] = job.gradients ? "given" : "estimated";
   if (fit == TS::Fit::Minimal_energy)
-    report.set("smoothing", job.smoothing);
+    report["smoothing"] = job.smoothing;
   if (fit == TS::Fit::Local_polynomial || fit == TS::Fit::Least_squares ||
       fit == TS::Fit::Adaptive) {
     Json local = Json::object();
-    local.set("max_degree", job.degree);
-    local.set("degree_selection", job.degree_selection);
+    local["max_degree"] = job.degree;
+    local["degree_selection"] = job.degree_selection;
     Json by_degree = Json::array();
     for (std::size_t count : fit_statistics.vertices_by_degree)
       by_degree.push_back(count);
-    local.set("vertices_by_degree", by_degree);
+    local["vertices_by_degree"] = by_degree;
     if (fit == TS::Fit::Adaptive) {
       // How much of the surface follows the local polynomials and how much the energy.
       const auto& trust = fit_statistics.vertices_by_trust;
-      local.set("vertices_trusted", trust[0]);
-      local.set("vertices_blended", trust[1]);
-      local.set("vertices_minimal_energy", trust[2]);
-      local.set("energy_skipped", fit_statistics.energy_skipped);
+      local["vertices_trusted"] = trust[0];
+      local["vertices_blended"] = trust[1];
+      local["vertices_minimal_energy"] = trust[2];
+      local["energy_skipped"] = fit_statistics.energy_skipped;
     }
-    report.set("local_polynomials", local);
+    report["local_polynomials"] = local;
   }
-  report.set("vertices", d.number_of_vertices());
-  report.set("faces", d.number_of_faces());
-  report.set("interior_edges", d.number_of_interior_edges());
-  report.set("boundary_edges", d.number_of_boundary_edges());
-  report.set("boundary_loops", d.number_of_boundary_loops());
-  report.set("merged_duplicate_points", input.merged_duplicates);
-  report.set("free_parameters", spline.number_of_free_parameters());
-  report.set("free_parameters_formula", "3V + 3F + E_I + 3E_B + sigma");
-  report.set("dimension_morgan_scott", morgan_scott ? Json(*morgan_scott) : Json());
-  report.set("dimension", dimension_proven ? Json(spline.number_of_free_parameters()) : Json());
-  report.set("dimension_upper_bound",
-             dimension_bound ? Json(dimension_bound->upper_bound) : Json());
-  report.set("dimension_rank_prime", dimension_bound ? Json(dimension_bound->prime) : Json());
-  report.set("singular_vertices", spline.singular_vertices().size());
-  report.set("degenerate_frames", job.fix == "perturb" ? original_frames.frames.size()
-                                                       : spline.degenerate_frames().size());
-  report.set("degenerate_frames_numerical", numerical_frames);
-  report.set("max_interpolation_error", interpolation_error);
-  report.set("thin_plate_energy", thin_plate);
+  report["vertices"] = d.number_of_vertices();
+  report["faces"] = d.number_of_faces();
+  report["interior_edges"] = d.number_of_interior_edges();
+  report["boundary_edges"] = d.number_of_boundary_edges();
+  report["boundary_loops"] = d.number_of_boundary_loops();
+  report["merged_duplicate_points"] = input.merged_duplicates;
+  report["free_parameters"] = spline.number_of_free_parameters();
+  report["free_parameters_formula"] = "3V + 3F + E_I + 3E_B + sigma";
+  report["dimension_morgan_scott"] = morgan_scott ? Json(*morgan_scott) : Json();
+  report["dimension"] = dimension_proven ? Json(spline.number_of_free_parameters()) : Json();
+  report["dimension_upper_bound"] = dimension_bound ? Json(dimension_bound->upper_bound) : Json();
+  report["dimension_rank_prime"] = dimension_bound ? Json(dimension_bound->prime) : Json();
+  report["singular_vertices"] = spline.singular_vertices().size();
+  report["degenerate_frames"] =
+      job.fix == "perturb" ? original_frames.frames.size() : spline.degenerate_frames().size();
+  report["degenerate_frames_numerical"] = numerical_frames;
+  report["max_interpolation_error"] = interpolation_error;
+  report["thin_plate_energy"] = thin_plate;
   auto range = [](double lo, double hi) {
     Json a = Json::array();
     a.push_back(lo);
     a.push_back(hi);
     return a;
   };
-  report.set("data_range", range(data_min, data_max));
-  report.set("surface_range_sampled", range(sampled_min, sampled_max));
-  report.set("control_value_range", range(control_min, control_max));
-  report.set("overshoot_warning", overshoots);
+  report["data_range"] = range(data_min, data_max);
+  report["surface_range_sampled"] = range(sampled_min, sampled_max);
+  report["control_value_range"] = range(control_min, control_max);
+  report["overshoot_warning"] = overshoots;
   std::size_t thin_frames = 0;
   for (const auto& f : spline.rerouted_frames())
     thin_frames += f.thin ? 1 : 0;
-  report.set("thin_frames_rerouted", thin_frames);
-  report.set("propagation_weight_bound", Spline::propagation_weight_bound);
-  report.set("max_propagation_weight", spline.max_propagation_weight());
+  report["thin_frames_rerouted"] = thin_frames;
+  report["propagation_weight_bound"] = Spline::propagation_weight_bound;
+  report["max_propagation_weight"] = spline.max_propagation_weight();
   {
     // Where the largest weights are: by the role of the computed point.
     std::array<double, 5> by_kind{};
@@ -410,40 +409,40 @@ Json run(const C1_job& job, std::ostream& out) {
     Json kinds = Json::object();
     const char* names[] = {"corner", "star", "edge_middle", "corner_inner", "flip"};
     for (std::size_t k = 0; k < 5; ++k)
-      kinds.set(names[k], by_kind[k]);
-    report.set("max_propagation_weight_by_role", kinds);
+      kinds[names[k]] = by_kind[k];
+    report["max_propagation_weight_by_role"] = kinds;
   }
   Json moved = Json::array();
   for (const auto& m : moves) {
     Json entry = Json::object();
-    entry.set("vertex", m.vertex);
-    entry.set("from", point_json(m.from));
-    entry.set("to", point_json(m.to));
-    entry.set("distance", m.distance);
+    entry["vertex"] = m.vertex;
+    entry["from"] = point_json(m.from);
+    entry["to"] = point_json(m.to);
+    entry["distance"] = m.distance;
     moved.push_back(entry);
   }
-  report.set("perturbed_vertices", moved);
-  report.set("degenerate_frames_rerouted", spline.degenerate_frames().size());
+  report["perturbed_vertices"] = moved;
+  report["degenerate_frames_rerouted"] = spline.degenerate_frames().size();
   // certified_c1 is a proof: exact builds only. Double builds report the tolerance check,
   // and the tolerance that `tspline certify --tolerance` needs for the saved file.
-  report.set("verdict", TS::verdict_name(certificate.verdict));
-  report.set("certified_c1", certificate.verdict == TS::Certificate_verdict::proof);
-  report.set("certificate_exact", certificate.exact);
-  report.set("c1_within_tolerance", certificate.certified);
-  report.set("c1_tolerance", certificate.tolerance);
-  report.set("max_c1_residual", certificate.max_residual);
-  report.set("failed_edges", certificate.failed_edges);
+  report["verdict"] = TS::verdict_name(certificate.verdict);
+  report["certified_c1"] = certificate.verdict == TS::Certificate_verdict::proof;
+  report["certificate_exact"] = certificate.exact;
+  report["c1_within_tolerance"] = certificate.certified;
+  report["c1_tolerance"] = certificate.tolerance;
+  report["max_c1_residual"] = certificate.max_residual;
+  report["failed_edges"] = certificate.failed_edges;
 
   if (!job.mesh.empty()) {
     progress("c1", "tessellating and writing " + job.mesh, large || job.levels >= 5);
-    report.set("mesh", write_tessellated_mesh(spline, job.levels, job.mesh));
-    timings.set("tessellate_and_write", clock.lap());
+    report["mesh"] = write_tessellated_mesh(spline, job.levels, job.mesh);
+    timings["tessellate_and_write"] = clock.lap();
   }
   if (!job.save.empty()) {
     std::ofstream file = open_output(job.save);
     TS::write_spline_file(file, spline);
-    report.set("saved", job.save);
-    timings.set("save", clock.lap());
+    report["saved"] = job.save;
+    timings["save"] = clock.lap();
   }
   if (!job.query.empty()) {
     if (job.values.empty())
@@ -452,7 +451,10 @@ Json run(const C1_job& job, std::ostream& out) {
     const auto queries = TS::read_query_points<K>(query_file, job.query);
     const TS::Domain_locator<K> locator(d);
     const std::vector<double> values = TS::evaluate_functional(spline, locator, queries);
-    std::ofstream file = open_output(job.values);
+    std::ofstream values_file;
+    if (job.values != "-")
+      values_file = open_output(job.values);
+    std::ostream& file = job.values == "-" ? std::cout : values_file;
     std::size_t outside = 0;
     for (double v : values) {
       if (std::isnan(v)) {
@@ -465,14 +467,14 @@ Json run(const C1_job& job, std::ostream& out) {
       }
     }
     Json q = Json::object();
-    q.set("points", queries.size());
-    q.set("outside_domain", outside);
-    q.set("values", job.values);
-    report.set("query", q);
-    timings.set("query", clock.lap());
+    q["points"] = queries.size();
+    q["outside_domain"] = outside;
+    q["values"] = job.values;
+    report["query"] = q;
+    timings["query"] = clock.lap();
   }
-  timings.set("total", total.lap());
-  report.set("timings_seconds", timings);
+  timings["total"] = total.lap();
+  report["timings_seconds"] = timings;
 
   if (!job.quiet) {
     out << "C^1 quintic spline (Xu) over " << input.kind << "\n"
@@ -533,12 +535,9 @@ Json run(const C1_job& job, std::ostream& out) {
   Json warning_list = Json::array();
   for (const std::string& warning : warnings)
     warning_list.push_back(warning);
-  report.set("warnings", warning_list);
-  if (!job.report.empty()) {
-    std::ofstream file = open_output(job.report);
-    report.write(file);
-    file << '\n';
-  }
+  report["warnings"] = warning_list;
+  if (!job.report.empty())
+    write_json_report(job.report, report);
   // The outputs are written (to look at), but a spline that fails its own check is an error.
   if (!certificate.certified && certificate.exact)
     throw std::runtime_error("the exact spline fails its C^1 certificate: this is a bug, please "
@@ -576,35 +575,35 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
            format_number(1e-10 * (std::max)(scale, 1.0)) +
            " accepts them (not a proof); build with --exact for a proof";
   Json report = Json::object();
-  report.set("file", path);
-  report.set("vertices", file.domain().number_of_vertices());
-  report.set("faces", file.domain().number_of_faces());
-  report.set("verdict", TS::verdict_name(c.verdict));
-  report.set("certified_c1", c.verdict == TS::Certificate_verdict::proof);
-  report.set("within_tolerance", c.certified);
-  report.set("exact", true);
-  report.set("tolerance", tolerance >= 0 ? Json(tolerance) : Json());
-  report.set("max_c1_residual", c.max_residual);
-  report.set("max_c1_residual_log10", log10_json(c.max_residual_log10));
-  report.set("interior_edges", c.interior_edges);
-  report.set("failed_edges", c.failed_edges);
-  report.set("nonzero_edges", c.nonzero_edges);
+  report["file"] = path;
+  report["vertices"] = file.domain().number_of_vertices();
+  report["faces"] = file.domain().number_of_faces();
+  report["verdict"] = TS::verdict_name(c.verdict);
+  report["certified_c1"] = c.verdict == TS::Certificate_verdict::proof;
+  report["within_tolerance"] = c.certified;
+  report["exact"] = true;
+  report["tolerance"] = tolerance >= 0 ? Json(tolerance) : Json();
+  report["max_c1_residual"] = c.max_residual;
+  report["max_c1_residual_log10"] = log10_json(c.max_residual_log10);
+  report["interior_edges"] = c.interior_edges;
+  report["failed_edges"] = c.failed_edges;
+  report["nonzero_edges"] = c.nonzero_edges;
   Json edges = Json::array();
   for (const auto& e : c.edges) {
     Json entry = Json::object();
-    entry.set("edge", e.edge);
+    entry["edge"] = e.edge;
     Json v = Json::array();
     v.push_back(e.vertices[0]);
     v.push_back(e.vertices[1]);
-    entry.set("vertices", v);
-    entry.set("c0", e.achieved_order >= 0);
-    entry.set("c1", e.holds);
-    entry.set("zero", e.zero);
-    entry.set("residual", e.residual);
-    entry.set("residual_log10", log10_json(e.residual_log10));
+    entry["vertices"] = v;
+    entry["c0"] = e.achieved_order >= 0;
+    entry["c1"] = e.holds;
+    entry["zero"] = e.zero;
+    entry["residual"] = e.residual;
+    entry["residual_log10"] = log10_json(e.residual_log10);
     edges.push_back(entry);
   }
-  report.set("edges", edges);
+  report["edges"] = edges;
   return {report, c.certified, hint};
 }
 

@@ -2,7 +2,7 @@
 // data set with a hole, a re-entrant corner and straight boundaries, no input needed.
 
 #include "c1_job.h"
-#include "cli.h"
+#include "command_line.h"
 #include "commands.h"
 #include "render_job.h"
 
@@ -14,28 +14,23 @@
 namespace tspline {
 
 int run_demo(const std::vector<std::string>& args) {
-  Argument_parser parser("demo", std::string(command_summary("demo")));
-  parser.describe("Builds Xu's C^1 quintic spline over an embedded L-shaped domain with a square "
-                  "hole, whose straight boundaries produce degenerate frames, in exact rational "
-                  "arithmetic; certifies C^1 on every interior edge; writes the tessellated "
-                  "surface, the spline and a JSON report.");
-  parser.add_option("output-dir", "DIR", "directory for the output files, created if needed",
-                    "out/demo");
-  parser.add_option("levels", "L", "4-split levels of the tessellated surface", "3");
-  const Parsed_arguments parsed = parser.parse(args);
-  if (parsed.help_requested()) {
-    std::cout << parser.help();
+  C1_job job;
+  std::string output = "out/demo";
+  Command_line cl("demo");
+  cl.describe("Builds Xu's C^1 quintic spline over an embedded L-shaped domain with a square "
+              "hole, whose straight boundaries produce degenerate frames, in exact rational "
+              "arithmetic; certifies C^1 on every interior edge; writes the tessellated "
+              "surface, the spline and a JSON report.");
+  cl.output(output, "output", "DIR", "directory for the output files, created if needed",
+            {{}, false, true}, {"output-dir"});
+  cl.integer(job.levels, "levels", "L", "4-split levels of the tessellated surface (0..8)", 0, 8);
+  if (!cl.parse(args))
     return 0;
-  }
-  const std::filesystem::path dir = parsed.value("output-dir");
-  if (dir.empty())
-    throw Usage_error("option '--output-dir' must not be empty");
+  const std::filesystem::path dir = output;
   std::filesystem::create_directories(dir);
 
-  C1_job job;
   job.exact = true;
   job.fit = "adaptive"; // local quintic fits where they resolve the data, least energy elsewhere
-  job.levels = static_cast<int>(parsed.integer("levels"));
   job.dimension = true;
   job.mesh = (dir / "demo_surface.ply").string();
   job.report = (dir / "demo_report.json").string();

@@ -1,6 +1,6 @@
 // tspline eval: argument handling; the work is in eval_job.cpp.
 
-#include "cli.h"
+#include "command_line.h"
 #include "commands.h"
 #include "eval_job.h"
 #include "files.h"
@@ -84,56 +84,50 @@ Eval_grid parse_grid(const std::string& text) {
 } // namespace
 
 int run_eval(const std::vector<std::string>& args) {
-  Argument_parser parser("eval", std::string(command_summary("eval")));
-  parser.describe(
+  Eval_job job;
+  std::string grid;
+  Command_line cl("eval");
+  cl.describe(
       "Evaluates a saved functional spline (a 'tspline-spline 1' file of dimension 1, as written "
-      "by 'tspline c1 --save', 'tspline mann --save' and 'tspline adjust --output') and its "
+      "by 'tspline c1 --output', 'tspline mann --output' and 'tspline adjust --output') and its "
       "derivatives at query points or on a regular grid. Output: CSV with the header "
       "'x,y,z[,zx,zy[,zxx,zxy,zyy]]' (numbers as %.17g, 'nan' where there is no value), or, "
       "with --grid and an output ending in .asc, an ESRI ASCII grid of the values (square "
       "cells, rows from north to south, NODATA_value -9999; the cells are centred on the grid "
       "nodes).");
-  parser.describe(
+  cl.describe(
       "Points outside a boundary edge by a rounding error (at most 1e-9 of the edge's length, "
       "or 1e-13 of the largest coordinate) are evaluated on the edge. Farther points get "
       "--outside: nan, the spline at the nearest boundary point (nearest), or the linear "
       "extrapolation from that point with its gradient (linear, Hessian 0). On an edge or at a "
       "vertex the derivatives are those of one incident patch.");
-  parser.add_option("input", "FILE.spline", "the spline to evaluate (dimension 1)");
-  parser.add_option("query", "FILE.xy",
-                    "query points, 'x y' per line (a third column, as in .xyz files, is ignored)");
-  parser.add_option("grid", "XMIN,XMAX,YMIN,YMAX,NX,NY",
-                    "a regular grid of NX x NY nodes, both ends included (CSV rows: x fastest, y "
-                    "increasing)");
-  parser.add_option("derivatives", "D", "0: z; 1: also zx, zy; 2: also zxx, zxy, zyy", "0");
-  parser.add_option("outside", "MODE", "nan, nearest or linear (see above)", "nan");
-  parser.add_switch("exact", "read and evaluate in exact rational arithmetic (slower; the "
-                             "printed numbers are the exact results rounded to double)");
-  parser.add_option("output", "OUT", "CSV file, '-' for stdout, or FILE.asc with --grid");
-  const Parsed_arguments parsed = parser.parse(args);
-  if (parsed.help_requested()) {
-    std::cout << parser.help();
+  cl.input(job.input, "FILE.spline", "the spline to evaluate (dimension 1)");
+  cl.text(job.query, "query", "FILE.xy",
+          "query points, 'x y' per line (a third column, as in .xyz files, is ignored)");
+  cl.text(grid, "grid", "XMIN,XMAX,YMIN,YMAX,NX,NY",
+          "a regular grid of NX x NY nodes, both ends included (CSV rows: x fastest, y "
+          "increasing)");
+  cl.integer(job.derivatives, "derivatives", "D", "0: z; 1: also zx, zy; 2: also zxx, zxy, zyy", 0,
+             2);
+  cl.text(job.outside, "outside", "MODE", "nan, nearest or linear (see above)");
+  cl.flag(job.exact, "exact",
+          "read and evaluate in exact rational arithmetic (slower; the "
+          "printed numbers are the exact results rounded to double)");
+  cl.output(job.output, "output", "OUT", "CSV file, '-' for stdout, or FILE.asc with --grid",
+            {{}, true});
+  if (!cl.parse(args))
     return 0;
-  }
-  if (!parsed.has("input"))
+  if (job.input.empty())
     throw Usage_error("missing --input FILE.spline");
-  if (parsed.has("query") == parsed.has("grid"))
+  if (cl.given("query") == cl.given("grid"))
     throw Usage_error("give exactly one of --query FILE.xy and --grid XMIN,XMAX,YMIN,YMAX,NX,NY");
-  if (!parsed.has("output"))
+  if (job.output.empty())
     throw Usage_error("missing --output OUT (a CSV file, '-' for stdout, or FILE.asc)");
-  Eval_job job;
-  job.input = parsed.value("input");
-  job.output = parsed.value("output");
-  job.derivatives = parsed.integer_in("derivatives", 0, 2);
-  job.outside = parsed.value("outside");
   if (job.outside != "nan" && job.outside != "nearest" && job.outside != "linear")
     throw Usage_error("--outside must be nan, nearest or linear, not '" + job.outside + "'");
-  job.exact = parsed.is_set("exact");
-  if (parsed.has("query")) {
-    job.query = parsed.value("query");
-  } else {
+  if (!cl.given("query")) {
     job.use_grid = true;
-    job.grid = parse_grid(parsed.value("grid"));
+    job.grid = parse_grid(grid);
   }
   if (lowercase_extension(job.output) == "asc") {
     if (!job.use_grid)
@@ -144,7 +138,7 @@ int run_eval(const std::vector<std::string>& args) {
                         std::to_string(job.derivatives));
     ascii_grid_cellsize(job.grid); // square cells, checked before the spline is read
   }
-  run_eval_job(job, std::cout);
+  run_eval_job(job, cl.summary_stream());
   return 0;
 }
 

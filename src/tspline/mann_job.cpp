@@ -46,10 +46,10 @@ Json index_json(std::uint32_t face, const TS::Multi_index& index) {
 // quadruples per changed edge and vertex.
 Json adjustment_json(const TS::Network_adjustment& a, bool details) {
   Json result = Json::object();
-  result.set("order", a.order);
-  result.set("touched_points", a.number_of_touched_points());
-  result.set("changed_edges", a.number_of_changed_edges());
-  result.set("projected_vertices", a.vertices.size());
+  result["order"] = a.order;
+  result["touched_points"] = a.number_of_touched_points();
+  result["changed_edges"] = a.number_of_changed_edges();
+  result["projected_vertices"] = a.vertices.size();
   if (!details)
     return result;
   Json edges = Json::array();
@@ -57,42 +57,42 @@ Json adjustment_json(const TS::Network_adjustment& a, bool details) {
     if (e.touched.empty())
       continue;
     Json entry = Json::object();
-    entry.set("edge", e.edge);
+    entry["edge"] = e.edge;
     Json vertices = Json::array();
     vertices.push_back(e.vertices[0]);
     vertices.push_back(e.vertices[1]);
-    entry.set("vertices", vertices);
+    entry["vertices"] = vertices;
     Json touched = Json::array();
     for (const TS::Touched_control_point& p : e.touched)
       touched.push_back(index_json(p.face, p.index));
-    entry.set("touched", touched);
+    entry["touched"] = touched;
     edges.push_back(entry);
   }
-  result.set("edges", edges);
+  result["edges"] = edges;
   Json vertices = Json::array();
   for (const TS::Vertex_adjustment& v : a.vertices) {
     Json entry = Json::object();
-    entry.set("vertex", v.vertex);
-    entry.set("residual_before", v.residual);
+    entry["vertex"] = v.vertex;
+    entry["residual_before"] = v.residual;
     Json touched = Json::array();
     for (const TS::Touched_control_point& p : v.touched)
       touched.push_back(index_json(p.face, p.index));
-    entry.set("touched", touched);
+    entry["touched"] = touched;
     vertices.push_back(entry);
   }
-  result.set("vertices", vertices);
+  result["vertices"] = vertices;
   return result;
 }
 
 Json continuity_json(const TS::Continuity_certificate& c) {
   Json result = Json::object();
-  result.set("order", c.order);
-  result.set("exact", c.exact);
-  result.set("verdict", TS::verdict_name(c.verdict));
-  result.set("certified", c.certified);
-  result.set("lowest_order", c.lowest_order);
-  result.set("failed_edges", c.failed_edges);
-  result.set("max_residual", c.max_residual);
+  result["order"] = c.order;
+  result["exact"] = c.exact;
+  result["verdict"] = TS::verdict_name(c.verdict);
+  result["certified"] = c.certified;
+  result["lowest_order"] = c.lowest_order;
+  result["failed_edges"] = c.failed_edges;
+  result["max_residual"] = c.max_residual;
   return result;
 }
 
@@ -108,12 +108,12 @@ Job_result adjust_file(std::istream& in, const Adjust_job& job, std::ostream& ou
   Stopwatch clock, total;
   Json timings = Json::object();
   TS::Spline_file<Exact, Value> file = TS::read_spline_file<Exact, Value>(in, job.input);
-  timings.set("read", clock.lap());
+  timings["read"] = clock.lap();
   const auto& domain = file.domain();
   auto& patches = file.patches();
   const int n = file.degree();
   const TS::Continuity_certificate before = TS::certify_continuity(file, job.order);
-  timings.set("check_before", clock.lap());
+  timings["check_before"] = clock.lap();
   // A double build's file is C^k up to round-off: adjusting "repairs" the round-off by moving
   // most control points and writes rationals far longer than the input (issue 13).
   double scale = 1;
@@ -136,10 +136,10 @@ Job_result adjust_file(std::istream& in, const Adjust_job& job, std::ostream& ou
       << "  before: " << order_summary(before) << "\n";
 
   const TS::Network_adjustment adjustment = TS::adjust_network(domain, patches, job.order);
-  timings.set("adjust", clock.lap());
+  timings["adjust"] = clock.lap();
   const TS::Continuity_certificate after = TS::certify_continuity(file, job.order);
   const TS::Continuity_certificate c1 = TS::certify_continuity(file, 1);
-  timings.set("certify", clock.lap());
+  timings["certify"] = clock.lap();
   out << "  adjustment to C^" << job.order << " (exact): moved "
       << adjustment.number_of_touched_points() << " control points across "
       << adjustment.number_of_changed_edges() << " edges and around " << adjustment.vertices.size()
@@ -156,34 +156,31 @@ Job_result adjust_file(std::istream& in, const Adjust_job& job, std::ostream& ou
     std::ofstream output = open_output(job.output);
     TS::write_spline_file(output, file);
     out << "  wrote " << job.output << "\n";
-    timings.set("write", clock.lap());
+    timings["write"] = clock.lap();
   }
-  timings.set("total", total.lap());
+  timings["total"] = total.lap();
 
   Json report = Json::object();
-  report.set("input", job.input);
-  report.set("number_type", "exact");
-  report.set("dimension", TS::Value_traits<Value>::dimension);
-  report.set("degree", n);
-  report.set("order", job.order);
-  report.set("minimum_degree", TS::minimum_degree_for_network_continuity(job.order));
-  report.set("vertices", domain.number_of_vertices());
-  report.set("faces", domain.number_of_faces());
-  report.set("interior_edges", domain.number_of_interior_edges());
-  report.set("before", continuity_json(before));
-  report.set("adjustment", adjustment_json(adjustment, true));
-  report.set("after", continuity_json(after));
+  report["input"] = job.input;
+  report["number_type"] = "exact";
+  report["dimension"] = TS::Value_traits<Value>::dimension;
+  report["degree"] = n;
+  report["order"] = job.order;
+  report["minimum_degree"] = TS::minimum_degree_for_network_continuity(job.order);
+  report["vertices"] = domain.number_of_vertices();
+  report["faces"] = domain.number_of_faces();
+  report["interior_edges"] = domain.number_of_interior_edges();
+  report["before"] = continuity_json(before);
+  report["adjustment"] = adjustment_json(adjustment, true);
+  report["after"] = continuity_json(after);
   // Exact arithmetic and no tolerance: a certified verdict here is a proof.
-  report.set("certified_ck", after.verdict == TS::Certificate_verdict::proof);
-  report.set("certified_c1", c1.verdict == TS::Certificate_verdict::proof);
-  report.set("max_c1_residual", c1.max_residual);
-  report.set("output", job.output.empty() ? Json() : Json(job.output));
-  report.set("timings_seconds", timings);
-  if (!job.report.empty()) {
-    std::ofstream file_out = open_output(job.report);
-    report.write(file_out);
-    file_out << '\n';
-  }
+  report["certified_ck"] = after.verdict == TS::Certificate_verdict::proof;
+  report["certified_c1"] = c1.verdict == TS::Certificate_verdict::proof;
+  report["max_c1_residual"] = c1.max_residual;
+  report["output"] = job.output.empty() ? Json() : Json(job.output);
+  report["timings_seconds"] = timings;
+  if (!job.report.empty())
+    write_json_report(job.report, report);
   return {report, after.certified};
 }
 
@@ -217,7 +214,7 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   Stopwatch clock, total;
   Json timings = Json::object();
   Input<K> input = read_input<K>(job.input);
-  timings.set("read_and_triangulate", clock.lap());
+  timings["read_and_triangulate"] = clock.lap();
   const TS::Planar_domain<K>& domain = input.domain;
 
   const int order = TS::mann_derivative_order(job.degree);
@@ -227,9 +224,9 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   const std::size_t lowered = static_cast<std::size_t>(
       std::count_if(degrees.begin(), degrees.end(), [order](int d) { return d < order; }));
   const int lowest = degrees.empty() ? order : *std::min_element(degrees.begin(), degrees.end());
-  timings.set("estimate_derivatives", clock.lap());
+  timings["estimate_derivatives"] = clock.lap();
   const TS::Mann_interpolant<K> interpolant = TS::mann_interpolant(domain, jets, job.degree);
-  timings.set("interpolant", clock.lap());
+  timings["interpolant"] = clock.lap();
   const auto& patches = interpolant.patches();
 
   // Double builds: residuals are round-off, accepted up to a small multiple of the largest
@@ -243,7 +240,7 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   const TS::Continuity_certificate ck =
       TS::certify_continuity(interpolant, interpolant.continuity,
                              TS::parameters::residual_tolerance(job.exact ? 0 : 1e-8 * scale));
-  timings.set("certify", clock.lap());
+  timings["certify"] = clock.lap();
 
   // Interpolation error at the data points: the corner values of the incident patches.
   double max_vertex_error = 0;
@@ -253,47 +250,47 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
       const FT difference = patches[f].evaluate(domain.point(v)) - input.values[v];
       max_vertex_error = (std::max)(max_vertex_error, std::abs(CGAL::to_double(difference)));
     }
-  timings.set("vertex_error", clock.lap());
+  timings["vertex_error"] = clock.lap();
 
   Json report = Json::object();
-  report.set("input", job.input);
-  report.set("input_kind", input.kind);
-  report.set("number_type", job.exact ? "exact" : "double");
-  report.set("degree", job.degree);
-  report.set("continuity", interpolant.continuity);
-  report.set("derivative_order", order);
-  report.set("derivatives", "estimated by local polynomial least squares");
-  report.set("derivative_degree_lowered_vertices", lowered);
-  report.set("lowest_derivative_degree", lowest);
-  report.set("vertices", domain.number_of_vertices());
-  report.set("faces", domain.number_of_faces());
-  report.set("interior_edges", domain.number_of_interior_edges());
-  report.set("boundary_edges", domain.number_of_boundary_edges());
+  report["input"] = job.input;
+  report["input_kind"] = input.kind;
+  report["number_type"] = job.exact ? "exact" : "double";
+  report["degree"] = job.degree;
+  report["continuity"] = interpolant.continuity;
+  report["derivative_order"] = order;
+  report["derivatives"] = "estimated by local polynomial least squares";
+  report["derivative_degree_lowered_vertices"] = lowered;
+  report["lowest_derivative_degree"] = lowest;
+  report["vertices"] = domain.number_of_vertices();
+  report["faces"] = domain.number_of_faces();
+  report["interior_edges"] = domain.number_of_interior_edges();
+  report["boundary_edges"] = domain.number_of_boundary_edges();
   // certified_c1 is a proof: exact builds only. Double builds report the tolerance check.
-  report.set("verdict", TS::verdict_name(c1.verdict));
-  report.set("certified_c1", c1.verdict == TS::Certificate_verdict::proof);
-  report.set("certificate_exact", c1.exact);
-  report.set("c1_within_tolerance", c1.certified);
-  report.set("c1_tolerance", c1.tolerance);
-  report.set("max_c1_residual", c1.max_residual);
-  report.set("failed_edges", c1.failed_edges);
-  report.set("ck", continuity_json(ck));
-  report.set("max_vertex_error", max_vertex_error);
+  report["verdict"] = TS::verdict_name(c1.verdict);
+  report["certified_c1"] = c1.verdict == TS::Certificate_verdict::proof;
+  report["certificate_exact"] = c1.exact;
+  report["c1_within_tolerance"] = c1.certified;
+  report["c1_tolerance"] = c1.tolerance;
+  report["max_c1_residual"] = c1.max_residual;
+  report["failed_edges"] = c1.failed_edges;
+  report["ck"] = continuity_json(ck);
+  report["max_vertex_error"] = max_vertex_error;
   // Summary only: every interior edge moves points, the list would be as long as the mesh.
-  report.set("adjustment", adjustment_json(interpolant.adjustment, false));
+  report["adjustment"] = adjustment_json(interpolant.adjustment, false);
 
   if (!job.mesh.empty()) {
-    report.set("mesh", write_tessellated_mesh(interpolant, job.levels, job.mesh));
-    timings.set("tessellate_and_write", clock.lap());
+    report["mesh"] = write_tessellated_mesh(interpolant, job.levels, job.mesh);
+    timings["tessellate_and_write"] = clock.lap();
   }
   if (!job.save.empty()) {
     std::ofstream file = open_output(job.save);
     TS::write_spline_file(file, interpolant);
-    report.set("saved", job.save);
-    timings.set("save", clock.lap());
+    report["saved"] = job.save;
+    timings["save"] = clock.lap();
   }
-  timings.set("total", total.lap());
-  report.set("timings_seconds", timings);
+  timings["total"] = total.lap();
+  report["timings_seconds"] = timings;
 
   out << "Mann interpolant over " << input.kind << "\n"
       << "  domain: " << domain.number_of_vertices() << " vertices, " << domain.number_of_faces()
@@ -315,11 +312,8 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
         << (ck.certified ? (ck.exact ? "PASSED (exact)" : "passed (tolerance)") : "FAILED") << "\n";
   if (!c1.exact)
     out << "  (double build: use --exact for an exact proof of C^1)\n";
-  if (!job.report.empty()) {
-    std::ofstream file = open_output(job.report);
-    report.write(file);
-    file << '\n';
-  }
+  if (!job.report.empty())
+    write_json_report(job.report, report);
   return {report, c1.certified && ck.certified};
 }
 

@@ -23,10 +23,10 @@ Json write_tessellated_mesh(const Network& network, int levels, const std::strin
   const auto stats = CGAL::Triangular_spline::tessellate(network, levels, mesh);
   CGAL::Triangular_spline::write_mesh(path, mesh);
   Json m = Json::object();
-  m.set("path", path);
-  m.set("levels", levels);
-  m.set("vertices", stats.vertices);
-  m.set("faces", stats.faces);
+  m["path"] = path;
+  m["levels"] = levels;
+  m["vertices"] = stats.vertices;
+  m["faces"] = stats.faces;
   return m;
 }
 

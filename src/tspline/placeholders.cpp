@@ -1,7 +1,7 @@
 // Subcommands that are registered but not implemented yet. Each accepts
 // --help and otherwise exits with status 3, naming the issue that tracks it.
 
-#include "cli.h"
+#include "command_line.h"
 #include "commands.h"
 
 #include <iostream>
@@ -16,15 +16,11 @@ int not_implemented(const std::string& command, int issue, const std::vector<std
   const std::string status =
       issue > 0 ? "not implemented yet (tracked in issue " + std::to_string(issue) + ")"
                 : "not implemented yet (Xu ch. 5-6, SPEC section 4; no issue yet)";
-  for (const std::string& arg : args) {
-    if (arg == "--")
-      break;
-    if (arg == "--help" || arg == "-h") {
-      Argument_parser parser(command, std::string(command_summary(command)));
-      parser.describe("Status: " + status + ".");
-      std::cout << parser.help();
-      return 0;
-    }
+  if (Command_line::help_requested(args)) {
+    Command_line cl(command);
+    cl.describe("Status: " + status + ".");
+    std::cout << cl.help();
+    return 0;
   }
   std::cerr << "tspline " << command << ": " << status << '\n';
   return 3;

@@ -1,7 +1,7 @@
 // tspline render: argument handling; the work is in render_job.cpp and the tspline_render
 // library.
 
-#include "cli.h"
+#include "command_line.h"
 #include "commands.h"
 #include "render_job.h"
 
@@ -58,87 +58,82 @@ void parse_size(const std::string& text, int& width, int& height) {
 } // namespace
 
 int run_render(const std::vector<std::string>& args) {
-  Argument_parser parser("render", std::string(command_summary("render")));
-  parser.describe(
-      "Draws a surface into a PNG without a display. A .spline file (from 'tspline c1 --save' "
+  Render_job job;
+  std::string mode = "shaded", view = "-35,35", size = "800x600", light;
+  int levels = 0;
+  double range = 0;
+  bool perspective = false, no_legend = false;
+  Command_line cl("render");
+  cl.describe(
+      "Draws a surface into a PNG without a display. A .spline file (from 'tspline c1 --output' "
       "or 'tspline demo') is tessellated and its normals and Gaussian curvature come from the "
       "exact derivatives of the patches; a mesh (.ply/.off/.obj/.stl) is drawn as it is, with "
       "normals estimated when it has none.");
-  parser.describe(
+  cl.describe(
       "Modes: shaded (Blinn-Phong, two-sided); curvature (Gaussian curvature K, Fang's colours: "
       "green 0, yellow to red positive, cyan to blue negative, colour bar with the range); "
       "isophotes (black and white bands of |n.e|, e the direction to the eye or --light, "
       "Fang 2.3); net (the control net over a light surface: corners red squares, stars "
       "magenta, edge-middle blue, inner grey; when known, a green ring marks a prescribed "
       "point and an amber ring a propagated one, as in 'tspline demo').");
-  parser.add_option("input", "FILE", "a .spline file or a triangle mesh (.ply/.off/.obj/.stl)");
-  parser.add_option("out", "FILE.png", "the picture to write");
-  parser.add_option("mode", "MODE", "shaded, curvature, isophotes or net", "shaded");
-  parser.add_option("view", "AZ,EL",
-                    "azimuth and elevation in degrees (0,0: from -y with z up; 0,90: from above)",
-                    "-35,35");
-  parser.add_option("size", "WxH", "picture size in pixels", "800x600");
-  parser.add_option("levels", "L",
-                    "4-split levels of a .spline's tessellation, 0..8 (default: about 2.6e5 "
-                    "triangles)");
-  parser.add_option("bands", "N", "isophotes: number of bands of |n.e| in [0, 1]", "12");
-  parser.add_option("range", "R",
-                    "curvature: colours saturate at |K| = R (default: 98th percentile of |K|)");
-  parser.add_option("light", "X,Y,Z",
-                    "direction towards the light, world coordinates (default: above left of "
-                    "the eye); isophotes then use it as e");
-  parser.add_option("samples", "S", "supersampling: S x S samples per pixel, 1..4", "2");
-  parser.add_switch("perspective", "perspective projection (default: orthographic)");
-  parser.add_switch("no-legend", "no colour bar or marker key");
-  parser.add_option("ply", "FILE.ply",
-                    "also write the mesh as PLY with per-vertex curvature colours (red green "
-                    "blue) and curvature scalars, for MeshLab/ParaView");
-  parser.add_option("report", "FILE.json", "write a JSON report");
-  const Parsed_arguments parsed = parser.parse(args);
-  if (parsed.help_requested()) {
-    std::cout << parser.help();
+  cl.input(job.input, "FILE", "a .spline file or a triangle mesh (.ply/.off/.obj/.stl)");
+  cl.output(job.output, "output", "FILE.png", "the picture to write", {{"png"}}, {"out"});
+  cl.text(mode, "mode", "MODE", "shaded, curvature, isophotes or net");
+  cl.text(view, "view", "AZ,EL",
+          "azimuth and elevation in degrees (0,0: from -y with z up; 0,90: from above)");
+  cl.text(size, "size", "WxH", "picture size in pixels");
+  cl.integer(levels, "levels", "L",
+             "4-split levels of a .spline's tessellation, 0..8 (default: about 2.6e5 "
+             "triangles)",
+             0, 8, "", false);
+  cl.integer(job.options.bands, "bands", "N", "isophotes: number of bands of |n.e| in [0, 1]", 1,
+             1000);
+  cl.number(range, "range", "R",
+            "curvature: colours saturate at |K| = R (default: 98th percentile of |K|)", false);
+  cl.text(light, "light", "X,Y,Z",
+          "direction towards the light, world coordinates (default: above left of "
+          "the eye); isophotes then use it as e");
+  cl.integer(job.options.supersampling, "samples", "S",
+             "supersampling: S x S samples per pixel, 1..4", 1, 4);
+  cl.flag(perspective, "perspective", "perspective projection (default: orthographic)");
+  cl.flag(no_legend, "no-legend", "no colour bar or marker key");
+  cl.output(job.ply, "ply", "FILE.ply",
+            "also write the mesh as PLY with per-vertex curvature colours (red green "
+            "blue) and curvature scalars, for MeshLab/ParaView",
+            {{"ply"}});
+  cl.report(job.report, "write a JSON report");
+  if (!cl.parse(args))
     return 0;
-  }
-  if (!parsed.has("input"))
+  if (job.input.empty())
     throw Usage_error("missing --input FILE");
-  if (!parsed.has("out"))
-    throw Usage_error("missing --out FILE.png");
+  if (job.output.empty())
+    throw Usage_error("missing --output FILE.png");
 
-  Render_job job;
-  job.input = parsed.value("input");
-  job.output = parsed.value("out");
   try {
-    job.options.mode = render::parse_mode(parsed.value("mode"));
+    job.options.mode = render::parse_mode(mode);
   } catch (const std::invalid_argument& e) {
     throw Usage_error(e.what());
   }
-  const std::vector<double> view = number_list(parsed.value("view"), 2, "view", "AZ,EL in degrees");
-  job.options.azimuth = view[0];
-  job.options.elevation = view[1];
-  parse_size(parsed.value("size"), job.options.width, job.options.height);
-  if (parsed.has("levels"))
-    job.levels = parsed.integer_in("levels", 0, 8);
-  job.options.bands = parsed.integer_in("bands", 1, 1000);
-  if (parsed.has("range")) {
-    const double range = parsed.number("range");
+  const std::vector<double> angles = number_list(view, 2, "view", "AZ,EL in degrees");
+  job.options.azimuth = angles[0];
+  job.options.elevation = angles[1];
+  parse_size(size, job.options.width, job.options.height);
+  if (cl.given("levels"))
+    job.levels = levels;
+  if (cl.given("range")) {
     if (!(range > 0))
       throw Usage_error("--range must be positive");
     job.options.curvature_range = range;
   }
-  if (parsed.has("light")) {
-    const std::vector<double> l = number_list(parsed.value("light"), 3, "light", "X,Y,Z");
+  if (cl.given("light")) {
+    const std::vector<double> l = number_list(light, 3, "light", "X,Y,Z");
     if (l[0] == 0 && l[1] == 0 && l[2] == 0)
       throw Usage_error("--light must not be the zero vector");
     job.options.light = render::Vector{l[0], l[1], l[2]};
   }
-  job.options.supersampling = parsed.integer_in("samples", 1, 4);
-  job.options.perspective = parsed.is_set("perspective");
-  job.options.legend = !parsed.is_set("no-legend");
-  if (parsed.has("ply"))
-    job.ply = parsed.value("ply");
-  if (parsed.has("report"))
-    job.report = parsed.value("report");
-  run_render_job(job, std::cout);
+  job.options.perspective = perspective;
+  job.options.legend = !no_legend;
+  run_render_job(job, cl.summary_stream());
   return 0;
 }
 

@@ -206,61 +206,56 @@ Json run_render_job(const Render_job& job, std::ostream& out) {
   const double total = seconds_since(start);
 
   Json report = Json::object();
-  report.set("input", job.input);
-  report.set("input_kind", scene.kind);
-  report.set("output", job.output);
-  report.set("mode", render::mode_name(mode));
+  report["input"] = job.input;
+  report["input_kind"] = scene.kind;
+  report["output"] = job.output;
+  report["mode"] = render::mode_name(mode);
   Json size = Json::array();
   size.push_back(job.options.width);
   size.push_back(job.options.height);
-  report.set("size", size);
+  report["size"] = size;
   Json view = Json::array();
   view.push_back(job.options.azimuth);
   view.push_back(job.options.elevation);
-  report.set("view", view);
-  report.set("projection", job.options.perspective ? "perspective" : "orthographic");
+  report["view"] = view;
+  report["projection"] = job.options.perspective ? "perspective" : "orthographic";
   if (job.options.light)
-    report.set("light", vector_json(*job.options.light));
+    report["light"] = vector_json(*job.options.light);
   if (mode == render::Mode::Isophotes)
-    report.set("bands", job.options.bands);
-  report.set("supersampling", job.options.supersampling);
+    report["bands"] = job.options.bands;
+  report["supersampling"] = job.options.supersampling;
   if (scene.levels >= 0) {
-    report.set("patches", scene.patches);
-    report.set("degree", scene.degree);
-    report.set("levels", scene.levels);
+    report["patches"] = scene.patches;
+    report["degree"] = scene.degree;
+    report["levels"] = scene.levels;
   }
-  report.set("vertices", scene.mesh.number_of_vertices());
-  report.set("triangles", rendered.triangles);
-  report.set("covered_pixels", rendered.covered_pixels);
+  report["vertices"] = scene.mesh.number_of_vertices();
+  report["triangles"] = rendered.triangles;
+  report["covered_pixels"] = rendered.covered_pixels;
   if (mode == render::Mode::Net) {
-    report.set("net_points", scene.net.points.size());
-    report.set("net_segments", scene.net.segments.size());
+    report["net_points"] = scene.net.points.size();
+    report["net_segments"] = scene.net.segments.size();
   }
   if (rendered.has_curvature) {
     Json curvature = Json::object();
-    curvature.set("min", rendered.curvature_min);
-    curvature.set("max", rendered.curvature_max);
-    curvature.set("colour_range", rendered.curvature_range);
-    curvature.set("colour_range_from",
-                  rendered.curvature_range_from_user ? "--range" : "98th percentile of |K|");
-    report.set("gaussian_curvature", curvature);
+    curvature["min"] = rendered.curvature_min;
+    curvature["max"] = rendered.curvature_max;
+    curvature["colour_range"] = rendered.curvature_range;
+    curvature["colour_range_from"] =
+        rendered.curvature_range_from_user ? "--range" : "98th percentile of |K|";
+    report["gaussian_curvature"] = curvature;
   } else {
-    report.set("gaussian_curvature", Json());
+    report["gaussian_curvature"] = Json();
   }
   if (!job.ply.empty())
-    report.set("ply", job.ply);
+    report["ply"] = job.ply;
   Json seconds = Json::object();
-  seconds.set("tessellate", scene.tessellation_seconds);
-  seconds.set("render", rendered.seconds);
-  seconds.set("total", total);
-  report.set("seconds", seconds);
-  if (!job.report.empty()) {
-    std::ofstream file(job.report);
-    if (!file)
-      throw std::runtime_error("cannot write '" + job.report + "'");
-    report.write(file);
-    file << '\n';
-  }
+  seconds["tessellate"] = scene.tessellation_seconds;
+  seconds["render"] = rendered.seconds;
+  seconds["total"] = total;
+  report["seconds"] = seconds;
+  if (!job.report.empty())
+    write_json_report(job.report, report);
 
   if (!job.quiet) {
     char line[512];
