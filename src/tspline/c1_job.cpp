@@ -423,15 +423,8 @@ Json run(const C1_job& job, std::ostream& out) {
   }
   report["perturbed_vertices"] = moved;
   report["degenerate_frames_rerouted"] = spline.degenerate_frames().size();
-  // certified_c1 is a proof: exact builds only. Double builds report the tolerance check,
-  // and the tolerance that `tspline certify --tolerance` needs for the saved file.
-  report["verdict"] = TS::verdict_name(certificate.verdict);
-  report["certified_c1"] = certificate.verdict == TS::Certificate_verdict::proof;
-  report["certificate_exact"] = certificate.exact;
-  report["c1_within_tolerance"] = certificate.certified;
-  report["c1_tolerance"] = certificate.tolerance;
-  report["max_c1_residual"] = certificate.max_residual;
-  report["failed_edges"] = certificate.failed_edges;
+  // the tolerance is the one `tspline certify --tolerance` needs for the saved file
+  set_c1_certificate(report, certificate);
 
   if (!job.mesh.empty()) {
     progress("c1", "tessellating and writing " + job.mesh, large || job.levels >= 5);

@@ -266,14 +266,7 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   report["faces"] = domain.number_of_faces();
   report["interior_edges"] = domain.number_of_interior_edges();
   report["boundary_edges"] = domain.number_of_boundary_edges();
-  // certified_c1 is a proof: exact builds only. Double builds report the tolerance check.
-  report["verdict"] = TS::verdict_name(c1.verdict);
-  report["certified_c1"] = c1.verdict == TS::Certificate_verdict::proof;
-  report["certificate_exact"] = c1.exact;
-  report["c1_within_tolerance"] = c1.certified;
-  report["c1_tolerance"] = c1.tolerance;
-  report["max_c1_residual"] = c1.max_residual;
-  report["failed_edges"] = c1.failed_edges;
+  set_c1_certificate(report, c1);
   report["ck"] = continuity_json(ck);
   report["max_vertex_error"] = max_vertex_error;
   // Summary only: every interior edge moves points, the list would be as long as the mesh.

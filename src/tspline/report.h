@@ -4,6 +4,8 @@
 #ifndef TSPLINE_REPORT_H
 #define TSPLINE_REPORT_H
 
+#include "cli.h"
+
 #include <CGAL/Triangular_spline/certify.h>
 
 #include <cmath>
@@ -66,6 +68,19 @@ inline std::string certificate_summary(const CGAL::Triangular_spline::Continuity
       out << ", residual " << residual_text(e.residual, e.residual_log10) << "\n";
     }
   return out.str();
+}
+
+// The C^1 verdict of a built spline in a report. `certified_c1` is a proof: exact builds
+// only; double builds report the tolerance check.
+inline void set_c1_certificate(Json& report,
+                               const CGAL::Triangular_spline::Continuity_certificate& c) {
+  report["verdict"] = CGAL::Triangular_spline::verdict_name(c.verdict);
+  report["certified_c1"] = c.verdict == CGAL::Triangular_spline::Certificate_verdict::proof;
+  report["certificate_exact"] = c.exact;
+  report["c1_within_tolerance"] = c.certified;
+  report["c1_tolerance"] = c.tolerance;
+  report["max_c1_residual"] = c.max_residual;
+  report["failed_edges"] = c.failed_edges;
 }
 
 } // namespace tspline
