@@ -234,9 +234,9 @@ void BM_franke_mann(benchmark::State& state) {
 void BM_franke_xu_c1(benchmark::State& state) {
   const auto data = franke_data(int(state.range(0)));
   const auto [domain, values] = TS::delaunay_domain(data);
-  TS::C1_quintic_spline<Fast> spline(domain, TS::Corner_frame::Corner_and_two_stars);
+  TS::C1_quintic_spline<Fast> spline(domain, TS::Corner_frame::CORNER_AND_TWO_STARS);
   for (auto _ : state)
-    TS::fit_vertex_data(spline, values, TS::Fit::Tangent_planes);
+    TS::fit_vertex_data(spline, values, TS::Fit::TANGENT_PLANES);
   accuracy_counters(state, spline);
   state.counters["data_points"] = double(data.points.size());
 }

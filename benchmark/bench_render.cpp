@@ -26,7 +26,7 @@ const Mesh& surface() {
   static const Mesh mesh = [] {
     auto [domain, heights] = TS::demo_data<K>();
     TS::C1_quintic_spline<K> spline(std::move(domain));
-    TS::fit_vertex_data(spline, heights, TS::Fit::Approximate);
+    TS::fit_vertex_data(spline, heights, TS::Fit::APPROXIMATE);
     Mesh result;
     TS::tessellate(spline, 6, result);
     return result;

@@ -53,7 +53,7 @@ void BM_spline_from_triangulation(benchmark::State& state) {
     auto copy = domain;
     state.ResumeTiming();
     TS::C1_quintic_spline<K> spline(std::move(copy));
-    TS::fit_vertex_data(spline, values, TS::Fit::Approximate);
+    TS::fit_vertex_data(spline, values, TS::Fit::APPROXIMATE);
     benchmark::DoNotOptimize(spline.values().data());
   }
   state.counters["faces"] = double(domain.number_of_faces());

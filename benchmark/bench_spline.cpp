@@ -78,7 +78,7 @@ void BM_double_fit_and_propagate(benchmark::State& state) {
   TS::C1_quintic_spline<Fast> spline(jittered_grid<Fast>(n));
   const auto z = heights(spline.domain());
   for (auto _ : state)
-    TS::fit_vertex_data(spline, z, TS::Fit::Approximate);
+    TS::fit_vertex_data(spline, z, TS::Fit::APPROXIMATE);
   const double faces = 2.0 * n * n;
   state.counters["faces"] = faces;
   state.counters["slots_per_face"] = double(spline.number_of_slots()) / faces;
@@ -90,7 +90,7 @@ void BM_double_fit_and_propagate(benchmark::State& state) {
 void BM_double_certify(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   TS::C1_quintic_spline<Fast> spline(jittered_grid<Fast>(n));
-  TS::fit_vertex_data(spline, heights(spline.domain()), TS::Fit::Approximate);
+  TS::fit_vertex_data(spline, heights(spline.domain()), TS::Fit::APPROXIMATE);
   for (auto _ : state)
     benchmark::DoNotOptimize(TS::certify_continuity(spline, 1));
   state.counters["faces"] = 2.0 * n * n;
@@ -103,7 +103,7 @@ void BM_exact_build_and_certify(benchmark::State& state) {
   bool certified = false;
   for (auto _ : state) {
     TS::C1_quintic_spline<Exact> spline(domain);
-    TS::fit_vertex_data(spline, z, TS::Fit::Approximate);
+    TS::fit_vertex_data(spline, z, TS::Fit::APPROXIMATE);
     certified = TS::certify_continuity(spline, 1).certified;
   }
   state.counters["faces"] = 2.0 * n * n;
@@ -112,7 +112,7 @@ void BM_exact_build_and_certify(benchmark::State& state) {
 
 void BM_local_edit(benchmark::State& state) {
   TS::C1_quintic_spline<Fast> spline(jittered_grid<Fast>(300));
-  TS::fit_vertex_data(spline, heights(spline.domain()), TS::Fit::Approximate);
+  TS::fit_vertex_data(spline, heights(spline.domain()), TS::Fit::APPROXIMATE);
   const auto& free = spline.free_slots();
   std::size_t i = 0;
   std::size_t changed = 0;

@@ -34,7 +34,7 @@ int main() {
   auto B = polynomial.to_bezier(5, q, r, s);
 
   // Cut from one polynomial: C^5, the highest order a quintic pair can have.
-  TS::Join_report report = TS::check_join(A, B, 5, TS::Join_conditions::Lai);
+  TS::Join_report report = TS::check_join(A, B, 5, TS::Join_conditions::LAI);
   std::cout << "same polynomial: C^" << report.achieved_order << " (exact: " << std::boolalpha
             << report.exact << ")\n";
 

@@ -85,7 +85,7 @@ int main() {
   }
   const TS::Mann_interpolant<Kernel> repaired = TS::mann_interpolant(domain, other);
   const bool repaired_c1 =
-      TS::certify_continuity(repaired, 1).verdict == TS::Certificate_verdict::proof;
+      TS::certify_continuity(repaired, 1).verdict == TS::Certificate_verdict::PROOF;
   std::cout << "general data: " << repaired.adjustment.number_of_touched_points()
             << " control points moved over " << repaired.adjustment.number_of_changed_edges()
             << " edges, C^1 " << (repaired_c1 ? "certified" : "FAILED") << "\n";

@@ -43,8 +43,8 @@ int main() {
   auto [domain, heights] = TS::delaunay_domain(data);
 
   // The spline: corners interpolate, the other free points come from local polynomials.
-  TS::C1_quintic_spline<Kernel> spline(std::move(domain), TS::Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(spline, heights, TS::Fit::Local_polynomial, 3);
+  TS::C1_quintic_spline<Kernel> spline(std::move(domain), TS::Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(spline, heights, TS::Fit::LOCAL_POLYNOMIAL, 3);
 
   // Locate-and-evaluate: one locator per domain, then any number of queries.
   const TS::Domain_locator<Kernel> locator(spline.domain());
@@ -72,7 +72,7 @@ int main() {
   std::vector<Point_2> queries;
   for (const auto& c : cases)
     queries.push_back(c.first);
-  const auto jets = TS::evaluate_jets(spline, locator, queries, TS::Outside::Linear,
+  const auto jets = TS::evaluate_jets(spline, locator, queries, TS::Outside::LINEAR,
                                       /*order=*/2);
 
   bool all_exact = true;

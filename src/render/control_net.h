@@ -29,11 +29,11 @@ struct Unknown_status {
 inline Point_role point_role(const CGAL::Triangular_spline::Multi_index& index) {
   using CGAL::Triangular_spline::Control_point_role;
   switch (CGAL::Triangular_spline::role(index)) {
-  case Control_point_role::Corner:
+  case Control_point_role::CORNER:
     return Point_role::Corner;
-  case Control_point_role::Star:
+  case Control_point_role::STAR:
     return Point_role::Star;
-  case Control_point_role::Edge_middle:
+  case Control_point_role::EDGE_MIDDLE:
     return Point_role::Edge_middle;
   default:
     return Point_role::Inner;

@@ -199,13 +199,13 @@ Json run(const C1_job& job, std::ostream& out) {
                                    : TS::Degenerate_frame_analysis<std::uint32_t>();
   timings["degenerate_frame_fix"] = clock.lap();
 
-  const TS::Fit fit = job.fit == "interpolate" ? TS::Fit::Interpolate
-                      : job.fit == "tangent"   ? TS::Fit::Tangent_planes
-                      : job.fit == "lsq"       ? TS::Fit::Least_squares
-                      : job.fit == "local"     ? TS::Fit::Local_polynomial
-                      : job.fit == "energy"    ? TS::Fit::Minimal_energy
-                      : job.fit == "adaptive"  ? TS::Fit::Adaptive
-                                               : TS::Fit::Approximate;
+  const TS::Fit fit = job.fit == "interpolate" ? TS::Fit::INTERPOLATE
+                      : job.fit == "tangent"   ? TS::Fit::TANGENT_PLANES
+                      : job.fit == "lsq"       ? TS::Fit::LEAST_SQUARES
+                      : job.fit == "local"     ? TS::Fit::LOCAL_POLYNOMIAL
+                      : job.fit == "energy"    ? TS::Fit::MINIMAL_ENERGY
+                      : job.fit == "adaptive"  ? TS::Fit::ADAPTIVE
+                                               : TS::Fit::APPROXIMATE;
   progress("c1",
            "building the plan of " + std::to_string(domain.number_of_faces()) +
                " patches, fitting and propagating",
@@ -213,8 +213,8 @@ Json run(const C1_job& job, std::ostream& out) {
   namespace TSP = TS::parameters;
   TS::Fit_statistics fit_statistics;
   const TS::Degree_selection selection = job.degree_selection == "largest"
-                                             ? TS::Degree_selection::Largest
-                                             : TS::Degree_selection::Cross_validation;
+                                             ? TS::Degree_selection::LARGEST
+                                             : TS::Degree_selection::CROSS_VALIDATION;
   const auto outputs = TSP::smoothing(
       job.smoothing, TSP::vertex_gradients(input.gradients, TSP::fit_statistics(fit_statistics)));
   // The library chooses the corner frame the fit needs.
@@ -343,10 +343,10 @@ Json run(const C1_job& job, std::ostream& out) {
   if (job.rescale)
     report["rescale_y_factor"] = std::ldexp(1.0, input.y_exponent);
   report["gradients"] = job.gradients ? "given" : "estimated";
-  if (fit == TS::Fit::Minimal_energy)
+  if (fit == TS::Fit::MINIMAL_ENERGY)
     report["smoothing"] = job.smoothing;
-  if (fit == TS::Fit::Local_polynomial || fit == TS::Fit::Least_squares ||
-      fit == TS::Fit::Adaptive) {
+  if (fit == TS::Fit::LOCAL_POLYNOMIAL || fit == TS::Fit::LEAST_SQUARES ||
+      fit == TS::Fit::ADAPTIVE) {
     Json local = Json::object();
     local["max_degree"] = job.degree;
     local["degree_selection"] = job.degree_selection;
@@ -354,7 +354,7 @@ Json run(const C1_job& job, std::ostream& out) {
     for (std::size_t count : fit_statistics.vertices_by_degree)
       by_degree.push_back(count);
     local["vertices_by_degree"] = by_degree;
-    if (fit == TS::Fit::Adaptive) {
+    if (fit == TS::Fit::ADAPTIVE) {
       // How much of the surface follows the local polynomials and how much the energy.
       const auto& trust = fit_statistics.vertices_by_trust;
       local["vertices_trusted"] = trust[0];
@@ -506,7 +506,7 @@ Json run(const C1_job& job, std::ostream& out) {
       out << "  gradients: given at every vertex, interpolated\n";
     if (input.y_exponent != 0)
       out << "  rescaled: triangulated and fitted with y times 2^" << input.y_exponent << "\n";
-    if (fit == TS::Fit::Adaptive) {
+    if (fit == TS::Fit::ADAPTIVE) {
       const auto& trust = fit_statistics.vertices_by_trust;
       out << "  vertices following their local polynomial: " << trust[0]
           << ", blended with the minimal-energy surface: " << trust[1]
@@ -572,7 +572,7 @@ Certify_result certify_file(std::istream& in, const std::string& path, double to
   report["vertices"] = file.domain().number_of_vertices();
   report["faces"] = file.domain().number_of_faces();
   report["verdict"] = TS::verdict_name(c.verdict);
-  report["certified_c1"] = c.verdict == TS::Certificate_verdict::proof;
+  report["certified_c1"] = c.verdict == TS::Certificate_verdict::PROOF;
   report["within_tolerance"] = c.certified;
   report["exact"] = true;
   report["tolerance"] = tolerance >= 0 ? Json(tolerance) : Json();

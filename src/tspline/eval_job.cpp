@@ -91,7 +91,7 @@ public:
   std::vector<std::optional<Jet>> evaluate(const std::vector<Point_2>& points) {
     // Strictly first, then the outside mode on the misses only: the counts come for free.
     std::vector<std::optional<Jet>> jets =
-        TS::evaluate_jets(m_file, m_locator, points, TS::Outside::No_value, m_derivatives);
+        TS::evaluate_jets(m_file, m_locator, points, TS::Outside::NO_VALUE, m_derivatives);
     std::vector<Point_2> missed;
     std::vector<std::size_t> where;
     for (std::size_t q = 0; q < jets.size(); ++q)
@@ -102,7 +102,7 @@ public:
     m_counts.points += points.size();
     m_counts.outside += missed.size();
     m_counts.inside += points.size() - missed.size();
-    if (m_outside != TS::Outside::No_value && !missed.empty()) {
+    if (m_outside != TS::Outside::NO_VALUE && !missed.empty()) {
       auto extended = TS::evaluate_jets(m_file, m_locator, missed, m_outside, m_derivatives);
       for (std::size_t k = 0; k < missed.size(); ++k)
         jets[where[k]] = std::move(extended[k]);
@@ -166,9 +166,9 @@ void write_text(std::ostream& output, const std::string& text, const std::string
 template <class K>
 void run(const Eval_job& job, std::ostream& out) {
   using Point_2 = typename K::Point_2;
-  const TS::Outside outside = job.outside == "nearest"  ? TS::Outside::Nearest
-                              : job.outside == "linear" ? TS::Outside::Linear
-                                                        : TS::Outside::No_value;
+  const TS::Outside outside = job.outside == "nearest"  ? TS::Outside::NEAREST
+                              : job.outside == "linear" ? TS::Outside::LINEAR
+                                                        : TS::Outside::NO_VALUE;
   Stopwatch clock;
   Evaluator<K> evaluator(job.input, job.derivatives, outside);
   const double read_seconds = clock.lap();

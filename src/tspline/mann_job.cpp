@@ -174,8 +174,8 @@ Job_result adjust_file(std::istream& in, const Adjust_job& job, std::ostream& ou
   report["adjustment"] = adjustment_json(adjustment, true);
   report["after"] = continuity_json(after);
   // Exact arithmetic and no tolerance: a certified verdict here is a proof.
-  report["certified_ck"] = after.verdict == TS::Certificate_verdict::proof;
-  report["certified_c1"] = c1.verdict == TS::Certificate_verdict::proof;
+  report["certified_ck"] = after.verdict == TS::Certificate_verdict::PROOF;
+  report["certified_c1"] = c1.verdict == TS::Certificate_verdict::PROOF;
   report["max_c1_residual"] = c1.max_residual;
   report["output"] = job.output.empty() ? Json() : Json(job.output);
   report["timings_seconds"] = timings;

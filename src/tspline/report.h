@@ -37,7 +37,7 @@ inline std::string certificate_summary(const CGAL::Triangular_spline::Continuity
   using CGAL::Triangular_spline::Certificate_verdict;
   const std::string order = "C^" + std::to_string(c.order);
   std::ostringstream out;
-  if (c.verdict == Certificate_verdict::proof)
+  if (c.verdict == Certificate_verdict::PROOF)
     out << order
         << " certificate (exact rational arithmetic): PASSED (a proof: every condition "
            "holds exactly)\n";
@@ -75,7 +75,7 @@ inline std::string certificate_summary(const CGAL::Triangular_spline::Continuity
 inline void set_c1_certificate(Json& report,
                                const CGAL::Triangular_spline::Continuity_certificate& c) {
   report["verdict"] = CGAL::Triangular_spline::verdict_name(c.verdict);
-  report["certified_c1"] = c.verdict == CGAL::Triangular_spline::Certificate_verdict::proof;
+  report["certified_c1"] = c.verdict == CGAL::Triangular_spline::Certificate_verdict::PROOF;
   report["certificate_exact"] = c.exact;
   report["c1_within_tolerance"] = c.certified;
   report["c1_tolerance"] = c.tolerance;

@@ -16,7 +16,7 @@ using TS::Polynomial_surface;
 namespace {
 
 const std::vector<Join_conditions> all_condition_sets = {
-    Join_conditions::Extension, Join_conditions::Lai, Join_conditions::Complete};
+    Join_conditions::EXTENSION, Join_conditions::LAI, Join_conditions::COMPLETE};
 
 } // namespace
 
@@ -154,7 +154,7 @@ TYPED_TEST(JoinTest, PerturbedControlPointIsCaughtAndMeasured) {
       const Multi_index at{h, i, m - h - i};
       broken.set_control_point(at, broken.control_point(at) + delta);
       const TS::Join_report report =
-          TS::check_join(A, broken, 2, Join_conditions::Extension, tolerance);
+          TS::check_join(A, broken, 2, Join_conditions::EXTENSION, tolerance);
       EXPECT_EQ(report.achieved_order, h - 1) << "perturbed (" << h << "," << i << ")";
       EXPECT_FALSE(report.holds);
       // The extension residual of that very condition is the perturbation.

@@ -43,31 +43,31 @@ TEST(MultiIndex, EnumerationFollowsXuTable23) {
 
 TEST(MultiIndex, QuinticRolesMatchSpec) {
   auto role = [](int i, int j, int k) { return TS::role(Multi_index{i, j, k}); };
-  EXPECT_EQ(role(5, 0, 0), Control_point_role::Corner);
-  EXPECT_EQ(role(0, 0, 5), Control_point_role::Corner);
-  EXPECT_EQ(role(4, 1, 0), Control_point_role::Star);
-  EXPECT_EQ(role(4, 0, 1), Control_point_role::Star);
-  EXPECT_EQ(role(0, 1, 4), Control_point_role::Star);
-  EXPECT_EQ(role(3, 2, 0), Control_point_role::Edge_middle);
-  EXPECT_EQ(role(2, 3, 0), Control_point_role::Edge_middle);
-  EXPECT_EQ(role(0, 2, 3), Control_point_role::Edge_middle);
-  EXPECT_EQ(role(3, 1, 1), Control_point_role::Corner_inner);
-  EXPECT_EQ(role(1, 3, 1), Control_point_role::Corner_inner);
-  EXPECT_EQ(role(1, 1, 3), Control_point_role::Corner_inner);
-  EXPECT_EQ(role(2, 2, 1), Control_point_role::Middle_inner);
-  EXPECT_EQ(role(2, 1, 2), Control_point_role::Middle_inner);
-  EXPECT_EQ(role(1, 2, 2), Control_point_role::Middle_inner);
+  EXPECT_EQ(role(5, 0, 0), Control_point_role::CORNER);
+  EXPECT_EQ(role(0, 0, 5), Control_point_role::CORNER);
+  EXPECT_EQ(role(4, 1, 0), Control_point_role::STAR);
+  EXPECT_EQ(role(4, 0, 1), Control_point_role::STAR);
+  EXPECT_EQ(role(0, 1, 4), Control_point_role::STAR);
+  EXPECT_EQ(role(3, 2, 0), Control_point_role::EDGE_MIDDLE);
+  EXPECT_EQ(role(2, 3, 0), Control_point_role::EDGE_MIDDLE);
+  EXPECT_EQ(role(0, 2, 3), Control_point_role::EDGE_MIDDLE);
+  EXPECT_EQ(role(3, 1, 1), Control_point_role::CORNER_INNER);
+  EXPECT_EQ(role(1, 3, 1), Control_point_role::CORNER_INNER);
+  EXPECT_EQ(role(1, 1, 3), Control_point_role::CORNER_INNER);
+  EXPECT_EQ(role(2, 2, 1), Control_point_role::MIDDLE_INNER);
+  EXPECT_EQ(role(2, 1, 2), Control_point_role::MIDDLE_INNER);
+  EXPECT_EQ(role(1, 2, 2), Control_point_role::MIDDLE_INNER);
 
   // Counts per role in a quintic: 3 corners, 6 stars, 6 edge-middle, 3 + 3 inner.
   std::map<Control_point_role, int> count;
   for (const Multi_index& index : TS::multi_indices(5))
     ++count[TS::role(index)];
-  EXPECT_EQ(count[Control_point_role::Corner], 3);
-  EXPECT_EQ(count[Control_point_role::Star], 6);
-  EXPECT_EQ(count[Control_point_role::Edge_middle], 6);
-  EXPECT_EQ(count[Control_point_role::Corner_inner], 3);
-  EXPECT_EQ(count[Control_point_role::Middle_inner], 3);
-  EXPECT_EQ(count[Control_point_role::Deep_interior], 0);
+  EXPECT_EQ(count[Control_point_role::CORNER], 3);
+  EXPECT_EQ(count[Control_point_role::STAR], 6);
+  EXPECT_EQ(count[Control_point_role::EDGE_MIDDLE], 6);
+  EXPECT_EQ(count[Control_point_role::CORNER_INNER], 3);
+  EXPECT_EQ(count[Control_point_role::MIDDLE_INNER], 3);
+  EXPECT_EQ(count[Control_point_role::DEEP_INTERIOR], 0);
 
   // Owners: the star (4,1,0) belongs to vertex 0; the flip point (2,2,1) to the edge
   // opposite vertex 2.
@@ -80,14 +80,14 @@ TEST(MultiIndex, QuinticRolesMatchSpec) {
 
 TEST(MultiIndex, RolesGeneraliseToOtherDegrees) {
   // m = 2: edge midpoints touch corners -> stars; m = 3: the centre is corner-inner.
-  EXPECT_EQ(TS::role(Multi_index{1, 1, 0}), Control_point_role::Star);
-  EXPECT_EQ(TS::role(Multi_index{1, 1, 1}), Control_point_role::Corner_inner);
+  EXPECT_EQ(TS::role(Multi_index{1, 1, 0}), Control_point_role::STAR);
+  EXPECT_EQ(TS::role(Multi_index{1, 1, 1}), Control_point_role::CORNER_INNER);
   // m = 7: (2,2,3) is farther than one row from every edge.
-  EXPECT_EQ(TS::role(Multi_index{2, 2, 3}), Control_point_role::Deep_interior);
-  EXPECT_EQ(TS::role(Multi_index{5, 1, 1}), Control_point_role::Corner_inner);
-  EXPECT_EQ(TS::role(Multi_index{3, 3, 1}), Control_point_role::Middle_inner);
+  EXPECT_EQ(TS::role(Multi_index{2, 2, 3}), Control_point_role::DEEP_INTERIOR);
+  EXPECT_EQ(TS::role(Multi_index{5, 1, 1}), Control_point_role::CORNER_INNER);
+  EXPECT_EQ(TS::role(Multi_index{3, 3, 1}), Control_point_role::MIDDLE_INNER);
   // Every index of every degree has exactly one role and names are distinct.
-  EXPECT_EQ(TS::role_name(Control_point_role::Middle_inner), "middle-inner");
+  EXPECT_EQ(TS::role_name(Control_point_role::MIDDLE_INNER), "middle-inner");
   EXPECT_THROW(TS::multi_index(21, 5), TS::Invalid_input);
   EXPECT_THROW(TS::number_of_control_points(-1), TS::Invalid_input);
 }

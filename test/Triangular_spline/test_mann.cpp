@@ -203,7 +203,7 @@ TYPED_TEST(MannTest, PairsMeetingCkMinus1AreRaisedToCk) {
       }
       if constexpr (is_exact<K>) {
         for (Join_conditions set :
-             {Join_conditions::Extension, Join_conditions::Lai, Join_conditions::Complete})
+             {Join_conditions::EXTENSION, Join_conditions::LAI, Join_conditions::COMPLETE})
           EXPECT_TRUE(TS::check_join(A2, B2, k, set).holds) << "k=" << k << " n=" << n;
         // Floater's view (Mann §2.5): the moved points are those of the average polynomial.
         for (int i = 0; i <= n - k; ++i) {
@@ -219,7 +219,7 @@ TYPED_TEST(MannTest, PairsMeetingCkMinus1AreRaisedToCk) {
           EXPECT_EQ(B2.control_point(n - k - i, i, k), expected_b);
         }
       } else {
-        const TS::Join_report report = TS::check_join(A2, B2, k, Join_conditions::Lai);
+        const TS::Join_report report = TS::check_join(A2, B2, k, Join_conditions::LAI);
         for (const TS::Join_condition& c : report.conditions)
           EXPECT_LE(c.residual, this->tolerance(scale_of(A2), c.order)) << "k=" << k;
       }
@@ -270,7 +270,7 @@ TYPED_TEST(MannTest, ArbitraryPairsAreRaisedOrderByOrder) {
   auto B = this->random_patch(n, t.r, t.s, t.q);
   for (int l = 0; l <= 3; ++l) {
     TS::adjust_join(A, B, l);
-    const TS::Join_report report = TS::check_join(A, B, l, Join_conditions::Lai);
+    const TS::Join_report report = TS::check_join(A, B, l, Join_conditions::LAI);
     if (this->exact) {
       EXPECT_TRUE(report.holds) << "order " << l;
     } else {

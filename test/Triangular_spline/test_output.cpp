@@ -600,7 +600,7 @@ TYPED_TEST(Output, JetsReproduceThePolynomialDerivatives) {
         queries.push_back(random_point_in(domain, f, random));
     for (int order = 0; order <= 2; ++order) {
       const auto jets = TS::evaluate_jets(network(domain, patches), locator, queries,
-                                          TS::Outside::No_value, order);
+                                          TS::Outside::NO_VALUE, order);
       ASSERT_EQ(jets.size(), queries.size());
       for (std::size_t q = 0; q < queries.size(); ++q) {
         ASSERT_TRUE(jets[q].has_value()) << queries[q];
@@ -651,8 +651,8 @@ TEST(Jets, C1SplineFittedToACubicHasTheCubicsDerivativesExactly) {
   std::vector<FT> values;
   for (const auto& p : domain.points())
     values.push_back(cubic.evaluate(p));
-  TS::C1_quintic_spline<K> spline(domain, TS::Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(spline, values, TS::Fit::Local_polynomial, 3);
+  TS::C1_quintic_spline<K> spline(domain, TS::Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(spline, values, TS::Fit::LOCAL_POLYNOMIAL, 3);
   const Domain_locator<K> locator(spline.domain());
   std::vector<K::Point_2> queries;
   for (Index f = 0; f < spline.domain().number_of_faces(); ++f)
@@ -745,10 +745,10 @@ TYPED_TEST(Output, OutsideModesUseTheNearestBoundaryPoint) {
     ASSERT_TRUE(nearest.has_value());
     EXPECT_EQ(nearest->point, q);
     const TS::Point_jet<FT> at_q = polynomial_jet(polynomial, q);
-    const auto n = TS::evaluate_jet(network(ring, patches), locator, p, TS::Outside::Nearest);
+    const auto n = TS::evaluate_jet(network(ring, patches), locator, p, TS::Outside::NEAREST);
     ASSERT_TRUE(n.has_value());
     EXPECT_TRUE(same_jet(*n, at_q, exact, 1e3));
-    const auto l = TS::evaluate_jet(network(ring, patches), locator, p, TS::Outside::Linear);
+    const auto l = TS::evaluate_jet(network(ring, patches), locator, p, TS::Outside::LINEAR);
     ASSERT_TRUE(l.has_value());
     TS::Point_jet<FT> linear = at_q;
     const FT extrapolated =
@@ -758,7 +758,7 @@ TYPED_TEST(Output, OutsideModesUseTheNearestBoundaryPoint) {
     EXPECT_TRUE(same_jet(*l, linear, exact, 1e7));
     // values only: the extrapolation still uses the gradient
     const auto l0 =
-        TS::evaluate_jets(network(ring, patches), locator, {p}, TS::Outside::Linear, 0).front();
+        TS::evaluate_jets(network(ring, patches), locator, {p}, TS::Outside::LINEAR, 0).front();
     ASSERT_TRUE(l0.has_value());
     EXPECT_TRUE(same_value(l0->value, extrapolated, exact, 1e-8, 1e7));
     EXPECT_EQ(l0->gradient[0], FT(0));

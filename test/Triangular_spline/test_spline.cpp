@@ -200,7 +200,7 @@ TEST(Spline, ExactCertificationOnEveryDomainWithBothFixes) {
   using K = Exact_kernel;
   Random_rationals random(11);
   for (const auto& [name, domain] : all_domains<K>()) {
-    for (Corner_frame frame : {Corner_frame::Symmetric_stars, Corner_frame::Corner_and_two_stars}) {
+    for (Corner_frame frame : {Corner_frame::SYMMETRIC_STARS, Corner_frame::CORNER_AND_TWO_STARS}) {
       // Fix 1: re-routing (the plan handles the degenerate frames).
       C1_quintic_spline<K> spline(domain, frame);
       randomize(spline, random);
@@ -300,14 +300,14 @@ TEST(Certificate, OneCertificateForEveryNetworkAndOrder) {
   randomize(spline, random);
   const TS::Continuity_certificate c1 = TS::certify_continuity(spline, 1);
   EXPECT_EQ(c1.order, 1);
-  EXPECT_EQ(c1.verdict, TS::Certificate_verdict::proof);
+  EXPECT_EQ(c1.verdict, TS::Certificate_verdict::PROOF);
   EXPECT_EQ(c1.lowest_order, 1);
   for (TS::Join_conditions conditions :
-       {TS::Join_conditions::Extension, TS::Join_conditions::Lai, TS::Join_conditions::Complete}) {
+       {TS::Join_conditions::EXTENSION, TS::Join_conditions::LAI, TS::Join_conditions::COMPLETE}) {
     const TS::Continuity_certificate c2 =
         TS::certify_continuity(spline, 2, TSP::join_conditions(conditions));
     EXPECT_EQ(c2.conditions, conditions);
-    EXPECT_EQ(c2.verdict, TS::Certificate_verdict::failed);
+    EXPECT_EQ(c2.verdict, TS::Certificate_verdict::FAILED);
     EXPECT_EQ(c2.lowest_order, 1); // random free values: no edge is C^2
     EXPECT_EQ(c2.failed_edges, c2.interior_edges);
     for (const TS::Edge_certificate& e : c2.edges)
@@ -315,19 +315,19 @@ TEST(Certificate, OneCertificateForEveryNetworkAndOrder) {
     // the same conditions at order 1 agree with Xu's direct check
     const TS::Continuity_certificate again =
         TS::certify_continuity(spline, 1, TSP::join_conditions(conditions));
-    EXPECT_EQ(again.verdict, TS::Certificate_verdict::proof);
+    EXPECT_EQ(again.verdict, TS::Certificate_verdict::PROOF);
   }
   // both parameters in one pack, in either order
   const auto packed = TS::certify_continuity(
-      spline, 2, TSP::residual_tolerance(1e6, TSP::join_conditions(TS::Join_conditions::Lai)));
-  EXPECT_EQ(packed.conditions, TS::Join_conditions::Lai);
+      spline, 2, TSP::residual_tolerance(1e6, TSP::join_conditions(TS::Join_conditions::LAI)));
+  EXPECT_EQ(packed.conditions, TS::Join_conditions::LAI);
   EXPECT_EQ(packed.tolerance, 1e6);
   const auto reversed = TS::certify_continuity(
-      spline, 2, TSP::join_conditions(TS::Join_conditions::Lai, TSP::residual_tolerance(1e6)));
+      spline, 2, TSP::join_conditions(TS::Join_conditions::LAI, TSP::residual_tolerance(1e6)));
   EXPECT_EQ(reversed.tolerance, 1e6);
-  EXPECT_EQ(reversed.conditions, TS::Join_conditions::Lai);
+  EXPECT_EQ(reversed.conditions, TS::Join_conditions::LAI);
   // a huge tolerance accepts the C^2 residuals, never as a proof
-  EXPECT_EQ(packed.verdict, TS::Certificate_verdict::within_tolerance);
+  EXPECT_EQ(packed.verdict, TS::Certificate_verdict::WITHIN_TOLERANCE);
 
   const TS::Patch_network<K> copy = TS::make_patch_network(spline);
   EXPECT_EQ(copy.degree(), spline.degree());
@@ -356,11 +356,11 @@ TEST(Certificate, OnlyExactZerosMakeAProof) {
                                   TS::parameters::residual_tolerance(tolerance));
   };
   const TS::Continuity_certificate proof = certify_patches(0);
-  EXPECT_EQ(proof.verdict, TS::Certificate_verdict::proof);
+  EXPECT_EQ(proof.verdict, TS::Certificate_verdict::PROOF);
   EXPECT_EQ(proof.nonzero_edges, 0u);
   EXPECT_TRUE(std::isinf(proof.max_residual_log10));
   // A tolerance does not weaken a proof that needs none.
-  EXPECT_EQ(certify_patches(1e-3).verdict, TS::Certificate_verdict::proof);
+  EXPECT_EQ(certify_patches(1e-3).verdict, TS::Certificate_verdict::PROOF);
 
   // Raise the corner value of one face at one end of an interior edge by 10^-500.
   Index edge = 0;
@@ -377,14 +377,14 @@ TEST(Certificate, OnlyExactZerosMakeAProof) {
   patches[f].set_control_point(corner, patches[f].control_point(corner) + tiny);
 
   const TS::Continuity_certificate broken = certify_patches(0);
-  EXPECT_EQ(broken.verdict, TS::Certificate_verdict::failed);
+  EXPECT_EQ(broken.verdict, TS::Certificate_verdict::FAILED);
   EXPECT_FALSE(broken.certified);
   EXPECT_GE(broken.failed_edges, 1u);
   EXPECT_EQ(broken.max_residual, 0.0);                 // underflows in double...
   EXPECT_NEAR(broken.max_residual_log10, -500.0, 1.0); // ...but not in the certificate
   // A tolerance accepts it, but never as a proof.
   const TS::Continuity_certificate accepted = certify_patches(1e-300);
-  EXPECT_EQ(accepted.verdict, TS::Certificate_verdict::within_tolerance);
+  EXPECT_EQ(accepted.verdict, TS::Certificate_verdict::WITHIN_TOLERANCE);
   EXPECT_TRUE(accepted.certified);
   EXPECT_EQ(accepted.nonzero_edges, broken.failed_edges);
 
@@ -393,7 +393,7 @@ TEST(Certificate, OnlyExactZerosMakeAProof) {
   zero.propagate();
   const TS::Continuity_certificate check = TS::certify_continuity(zero, 1);
   EXPECT_EQ(check.max_residual, 0.0);
-  EXPECT_EQ(check.verdict, TS::Certificate_verdict::within_tolerance);
+  EXPECT_EQ(check.verdict, TS::Certificate_verdict::WITHIN_TOLERANCE);
 }
 
 // Issue 13, defect 9: the rational rank never finished on 100 scattered decimal points;
@@ -531,8 +531,8 @@ TEST(Spline, InterpolationAndLinearPrecision) {
       data.push_back(random.rational<FT>());
       linear.push_back(FT(3) * p.x() - FT(2) / FT(7) * p.y() + FT(5));
     }
-    for (Fit fit : {Fit::Interpolate, Fit::Tangent_planes, Fit::Least_squares}) {
-      C1_quintic_spline<K> spline(domain, Corner_frame::Corner_and_two_stars);
+    for (Fit fit : {Fit::INTERPOLATE, Fit::TANGENT_PLANES, Fit::LEAST_SQUARES}) {
+      C1_quintic_spline<K> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
       TS::fit_vertex_data(spline, data, fit);
       for (Index f = 0; f < domain.number_of_faces(); ++f)
         for (int i = 0; i < 3; ++i) {
@@ -541,10 +541,10 @@ TEST(Spline, InterpolationAndLinearPrecision) {
         }
       EXPECT_TRUE(certify(spline).certified) << name;
     }
-    for (Fit fit : {Fit::Approximate, Fit::Interpolate, Fit::Tangent_planes}) {
-      C1_quintic_spline<K> spline(domain, fit == Fit::Approximate
-                                              ? Corner_frame::Symmetric_stars
-                                              : Corner_frame::Corner_and_two_stars);
+    for (Fit fit : {Fit::APPROXIMATE, Fit::INTERPOLATE, Fit::TANGENT_PLANES}) {
+      C1_quintic_spline<K> spline(domain, fit == Fit::APPROXIMATE
+                                              ? Corner_frame::SYMMETRIC_STARS
+                                              : Corner_frame::CORNER_AND_TWO_STARS);
       TS::fit_vertex_data(spline, linear, fit);
       for (Index f = 0; f < domain.number_of_faces(); f += 3)
         for (int t = 0; t < 3; ++t) {
@@ -562,14 +562,14 @@ TEST(Spline, BadInputIsRejected) {
   using K = Exact_kernel;
   C1_quintic_spline<K> approximate(grid<K>(2, false));
   std::vector<K::FT> data(approximate.domain().number_of_vertices(), K::FT(1));
-  EXPECT_THROW(TS::fit_vertex_data(approximate, data, Fit::Interpolate), TS::Invalid_input);
+  EXPECT_THROW(TS::fit_vertex_data(approximate, data, Fit::INTERPOLATE), TS::Invalid_input);
   data.pop_back();
-  EXPECT_THROW(TS::fit_vertex_data(approximate, data, Fit::Approximate), TS::Invalid_input);
+  EXPECT_THROW(TS::fit_vertex_data(approximate, data, Fit::APPROXIMATE), TS::Invalid_input);
   // Non-finite data (double kernel).
   C1_quintic_spline<Epick> fast(grid<Epick>(2, false));
   std::vector<double> bad(fast.domain().number_of_vertices(), 1.0);
   bad[2] = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(TS::fit_vertex_data(fast, bad, Fit::Approximate), TS::Invalid_input);
+  EXPECT_THROW(TS::fit_vertex_data(fast, bad, Fit::APPROXIMATE), TS::Invalid_input);
 }
 
 TEST(Continuity, FastC1CheckAgreesWithBlossomCheck) {
@@ -653,8 +653,8 @@ TEST(Spline, DomainFromSurfaceMeshIn2DAnd3D) {
   const auto [grid_domain, heights] = TS::domain_from_face_graph<K>(terrain);
   ASSERT_EQ(heights.size(), 9u);
   EXPECT_EQ(heights[8], K::FT(1));
-  C1_quintic_spline<K> spline(grid_domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(spline, heights, Fit::Interpolate);
+  C1_quintic_spline<K> spline(grid_domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(spline, heights, Fit::INTERPOLATE);
   EXPECT_TRUE(certify(spline).certified);
   // A quad face is refused.
   CGAL::Surface_mesh<Epick::Point_2> quad;
@@ -703,14 +703,14 @@ TEST(Spline, LeastSquaresFitKeepsPropagatedPointsNearTheData) {
       largest = (std::max)(largest, std::abs(v));
     return largest;
   };
-  C1_quintic_spline<Epick> lsq(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(lsq, smooth, Fit::Least_squares);
-  C1_quintic_spline<Epick> tangent(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(tangent, smooth, Fit::Tangent_planes);
+  C1_quintic_spline<Epick> lsq(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(lsq, smooth, Fit::LEAST_SQUARES);
+  C1_quintic_spline<Epick> tangent(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(tangent, smooth, Fit::TANGENT_PLANES);
   EXPECT_LT(spread(lsq), 1.5) << "data in [-1, 1]";
   EXPECT_LE(spread(lsq), spread(tangent));
   EXPECT_LT(certify(lsq).max_residual, 1e-10);
-  TS::fit_vertex_data(lsq, linear, Fit::Least_squares);
+  TS::fit_vertex_data(lsq, linear, Fit::LEAST_SQUARES);
   for (std::uint32_t f = 0; f < domain.number_of_faces(); f += 5) {
     const auto& v = domain.face(f);
     const auto x =
@@ -723,8 +723,8 @@ TEST(Spline, LeastSquaresFitKeepsPropagatedPointsNearTheData) {
   Random_rationals random(4);
   for (std::size_t i = 0; i < exact_domain.number_of_vertices(); ++i)
     data.push_back(random.rational<Exact_kernel::FT>());
-  C1_quintic_spline<Exact_kernel> exact(exact_domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(exact, data, Fit::Least_squares);
+  C1_quintic_spline<Exact_kernel> exact(exact_domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(exact, data, Fit::LEAST_SQUARES);
   EXPECT_TRUE(certify(exact).certified);
 }
 
@@ -776,14 +776,14 @@ TEST(LocalFit, ReproducesCubicsExactlyWithEitherDegreeRule) {
   Random_rationals random(5);
   const auto cubic = random.polynomial<Exact_kernel>(3);
   // The adaptive fit trusts every vertex on such data (resolution 0): the same spline.
-  for (Fit fit : {Fit::Local_polynomial, Fit::Adaptive})
-    for (auto rule : {TS::Degree_selection::Cross_validation, TS::Degree_selection::Largest}) {
-      C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+  for (Fit fit : {Fit::LOCAL_POLYNOMIAL, Fit::ADAPTIVE})
+    for (auto rule : {TS::Degree_selection::CROSS_VALIDATION, TS::Degree_selection::LARGEST}) {
+      C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
       const TS::Fit_statistics statistics =
           TS::fit_vertex_data(spline, sample(domain, cubic), fit, 3, rule);
       EXPECT_EQ(statistics.vertices_by_degree[3], domain.number_of_vertices())
           << "every neighbourhood of 45 points determines a cubic";
-      if (fit == Fit::Adaptive) {
+      if (fit == Fit::ADAPTIVE) {
         EXPECT_EQ(statistics.vertices_by_trust[0], domain.number_of_vertices());
       }
       EXPECT_TRUE(reproduces(spline, cubic));
@@ -797,9 +797,9 @@ TEST(LocalFit, ReproducesCubicsExactlyWithEitherDegreeRule) {
   for (int h = 0; h <= 3; ++h)
     for (int k = 0; h + k <= 3; ++k)
       fast_cubic.set_coefficient(h, k, CGAL::to_double(cubic.coefficient(h, k)));
-  C1_quintic_spline<Epick> lsq(fast_domain, Corner_frame::Corner_and_two_stars);
+  C1_quintic_spline<Epick> lsq(fast_domain, Corner_frame::CORNER_AND_TWO_STARS);
   const std::vector<double> fast_values = sample(fast_domain, fast_cubic);
-  TS::fit_vertex_data(lsq, fast_values, Fit::Least_squares, 3);
+  TS::fit_vertex_data(lsq, fast_values, Fit::LEAST_SQUARES, 3);
   double scale = 0;
   for (double v : fast_values)
     scale = (std::max)(scale, std::abs(v));
@@ -818,9 +818,9 @@ TEST(LocalFit, ReproducesQuinticsWhereTheDataDetermineThem) {
   const auto domain = random_delaunay<Epick>(120, 31);
   Random_rationals random(8);
   const auto quintic = random.polynomial<Epick>(5);
-  C1_quintic_spline<Epick> spline(domain, Corner_frame::Corner_and_two_stars);
+  C1_quintic_spline<Epick> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
   const TS::Fit_statistics statistics =
-      TS::fit_vertex_data(spline, sample(domain, quintic), Fit::Local_polynomial, 5);
+      TS::fit_vertex_data(spline, sample(domain, quintic), Fit::LOCAL_POLYNOMIAL, 5);
   EXPECT_GT(statistics.vertices_by_degree[5], domain.number_of_vertices() / 2);
   TS::Local_polynomials<Epick> local(domain, sample(domain, quintic), 5);
   double scale = 0;
@@ -853,9 +853,9 @@ TEST(LocalFit, SmallSetsDegradeToLowerDegreesAndStayLinearExact) {
   linear.set_coefficient(0, 1, FT(5));
   for (const auto& points : sets) {
     const auto domain = delaunay_of<Exact_kernel>(points);
-    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
     const TS::Fit_statistics statistics =
-        TS::fit_vertex_data(spline, sample(domain, linear), Fit::Local_polynomial, 5);
+        TS::fit_vertex_data(spline, sample(domain, linear), Fit::LOCAL_POLYNOMIAL, 5);
     EXPECT_EQ(statistics.vertices_by_degree[0], 0u) << points.size() << " points";
     EXPECT_EQ(statistics.vertices_by_degree[3] + statistics.vertices_by_degree[4] +
                   statistics.vertices_by_degree[5],
@@ -879,8 +879,8 @@ TEST(LocalFit, ResultDoesNotDependOnTheInputOrder) {
     std::vector<Exact_kernel::FT> z;
     for (const auto& p : domain.points()) // a non-polynomial function of the point
       z.push_back(p.x() * p.x() * p.y() / (1 + p.y() * p.y()) + p.x());
-    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
-    TS::fit_vertex_data(spline, z, Fit::Local_polynomial, 3);
+    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::fit_vertex_data(spline, z, Fit::LOCAL_POLYNOMIAL, 3);
     std::map<std::array<double, 2>, Exact_kernel::FT> by_place;
     for (Index f = 0; f < domain.number_of_faces(); ++f) {
       const auto& t = domain.face(f);
@@ -925,8 +925,8 @@ TEST(LocalFit, ConvergesWithOrderAboveThreeAndAHalf) {
     std::vector<double> z;
     for (const auto& p : domain.points())
       z.push_back(f(p.x(), p.y()));
-    C1_quintic_spline<Epick> spline(domain, Corner_frame::Corner_and_two_stars);
-    TS::fit_vertex_data(spline, z, Fit::Local_polynomial, 5);
+    C1_quintic_spline<Epick> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::fit_vertex_data(spline, z, Fit::LOCAL_POLYNOMIAL, 5);
     const TS::Domain_locator<Epick> locator(domain);
     std::vector<Epick::Point_2> queries;
     for (int i = 0; i < 40; ++i)
@@ -949,8 +949,8 @@ TEST(LocalFit, RejectsBadArguments) {
   EXPECT_THROW(TS::Local_polynomials<Epick>(domain, z, -1), TS::Invalid_input);
   EXPECT_THROW(TS::Local_polynomials<Epick>(domain, std::vector<double>(3, 1.0), 3),
                TS::Invalid_input);
-  C1_quintic_spline<Epick> symmetric(domain, Corner_frame::Symmetric_stars);
-  EXPECT_THROW(TS::fit_vertex_data(symmetric, z, Fit::Local_polynomial), TS::Invalid_input);
+  C1_quintic_spline<Epick> symmetric(domain, Corner_frame::SYMMETRIC_STARS);
+  EXPECT_THROW(TS::fit_vertex_data(symmetric, z, Fit::LOCAL_POLYNOMIAL), TS::Invalid_input);
 }
 
 // ---- Stable propagation (issue 10: bounded weights at thin frames) ---------------------
@@ -986,7 +986,7 @@ TEST(StablePropagation, ThinFramesAreReroutedWithBoundedWeights) {
   for (const double degrees : {1e-2, 1e-4, 1e-8, 0.0}) {
     const FT delta = FT(std::tan(degrees * 3.14159265358979 / 180));
     const auto domain = thin_frame_domain<Exact_kernel>(delta);
-    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
     std::size_t rerouted_at_r = 0;
     for (const auto& frame : spline.rerouted_frames()) {
       if (frame.vertex != 0)
@@ -1015,7 +1015,7 @@ TEST(StablePropagation, ThinFramesAreReroutedWithBoundedWeights) {
   }
   // Double build of the 1e-8 degree frame: C^1 up to rounding, bounded weights.
   const auto domain = thin_frame_domain<Epick>(std::tan(1e-8 * 3.14159265358979 / 180));
-  C1_quintic_spline<Epick> spline(domain, Corner_frame::Corner_and_two_stars);
+  C1_quintic_spline<Epick> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
   EXPECT_LE(spline.max_propagation_weight(), C1_quintic_spline<Epick>::propagation_weight_bound);
   Random_rationals random(13);
   randomize(spline, random);
@@ -1029,8 +1029,8 @@ TEST(StablePropagation, LocalFitOfSmoothDataStaysAccurateAtThinFrames) {
   const auto domain = thin_frame_domain<Exact_kernel>(FT(1) / FT(573000));
   Random_rationals random(3);
   const auto cubic = random.polynomial<Exact_kernel>(3);
-  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(spline, sample(domain, cubic), Fit::Local_polynomial, 3);
+  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(spline, sample(domain, cubic), Fit::LOCAL_POLYNOMIAL, 3);
   EXPECT_FALSE(spline.rerouted_frames().empty());
   EXPECT_TRUE(certify(spline).certified);
   // 9 points determine a cubic only at some vertices: where every corner of a face did, the
@@ -1056,15 +1056,15 @@ TEST(StablePropagation, FourNearlyCollinearDecimalPointsDoNotCrash) {
                                             {decimal("1.2"), decimal("0.5999999999999")},
                                             {decimal("1.6"), decimal("0.8")}};
   const auto domain = delaunay_of<Exact_kernel>(points);
-  C1_quintic_spline<Exact_kernel> exact(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(exact, std::vector<FT>{0, 1, 2, 3}, Fit::Local_polynomial);
+  C1_quintic_spline<Exact_kernel> exact(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(exact, std::vector<FT>{0, 1, 2, 3}, Fit::LOCAL_POLYNOMIAL);
   EXPECT_TRUE(certify(exact).certified);
   std::vector<Epick::Point_2> fast_points;
   for (const auto& p : points)
     fast_points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
   const auto fast_domain = delaunay_of<Epick>(fast_points);
-  for (Fit fit : {Fit::Local_polynomial, Fit::Tangent_planes, Fit::Interpolate}) {
-    C1_quintic_spline<Epick> fast(fast_domain, Corner_frame::Corner_and_two_stars);
+  for (Fit fit : {Fit::LOCAL_POLYNOMIAL, Fit::TANGENT_PLANES, Fit::INTERPOLATE}) {
+    C1_quintic_spline<Epick> fast(fast_domain, Corner_frame::CORNER_AND_TWO_STARS);
     EXPECT_NO_THROW(TS::fit_vertex_data(fast, std::vector<double>{0, 1, 2, 3}, fit));
     for (double v : fast.values())
       EXPECT_TRUE(std::isfinite(v));
@@ -1087,8 +1087,8 @@ TEST(LocalFit, CurvatureOfExpSinHasTheRightSignAlmostEverywhere) {
   std::vector<double> z;
   for (const auto& p : domain.points())
     z.push_back(std::exp(p.x()) * std::sin(2 * p.y()));
-  C1_quintic_spline<Epick> spline(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(spline, z, Fit::Local_polynomial, 5);
+  C1_quintic_spline<Epick> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(spline, z, Fit::LOCAL_POLYNOMIAL, 5);
   std::vector<Epick::Point_2> grid_points;
   for (int i = 0; i < 200; ++i)
     for (int j = 0; j < 200; ++j)
@@ -1114,8 +1114,8 @@ TEST(LocalFit, ThreadsDoNotChangeTheResult) {
   std::vector<double> z;
   for (const auto& p : domain.points())
     z.push_back(std::sin(0.2 * p.x()) * std::cos(0.3 * p.y()));
-  const TS::Local_polynomials<Epick> one(domain, z, 5, TS::Degree_selection::Cross_validation, 1);
-  const TS::Local_polynomials<Epick> three(domain, z, 5, TS::Degree_selection::Cross_validation, 3);
+  const TS::Local_polynomials<Epick> one(domain, z, 5, TS::Degree_selection::CROSS_VALIDATION, 1);
+  const TS::Local_polynomials<Epick> three(domain, z, 5, TS::Degree_selection::CROSS_VALIDATION, 3);
   for (Index v = 0; v < domain.number_of_vertices(); ++v) {
     ASSERT_EQ(one.degree(v), three.degree(v)) << v;
     const auto g1 = one.gradient(v), g3 = three.gradient(v);
@@ -1169,15 +1169,15 @@ TEST(ThinPlateEnergy, IsExactOnQuadraticsAndZeroOnLinearFunctions) {
   const auto domain = random_delaunay<Exact_kernel>(30, 4);
   Random_rationals random(21);
   auto quadratic = random.polynomial<Exact_kernel>(2);
-  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(spline, sample(domain, quadratic), Fit::Local_polynomial, 2);
+  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(spline, sample(domain, quadratic), Fit::LOCAL_POLYNOMIAL, 2);
   ASSERT_TRUE(reproduces(spline, quadratic));
   const FT a = quadratic.coefficient(2, 0), b = quadratic.coefficient(1, 1),
            c = quadratic.coefficient(0, 2);
   EXPECT_EQ(spline_energy(spline), domain_area(domain) * (4 * a * a + 2 * b * b + 4 * c * c));
   for (auto [h, k] : {std::pair{2, 0}, std::pair{1, 1}, std::pair{0, 2}})
     quadratic.set_coefficient(h, k, FT(0));
-  TS::fit_vertex_data(spline, sample(domain, quadratic), Fit::Local_polynomial, 2);
+  TS::fit_vertex_data(spline, sample(domain, quadratic), Fit::LOCAL_POLYNOMIAL, 2);
   EXPECT_EQ(spline_energy(spline), FT(0));
   // The matrix is symmetric and the same under a rotation by a right angle.
   const Exact_kernel::Point_2 p(0, 0), q(3, 1), r(1, 2);
@@ -1199,8 +1199,8 @@ TEST(MinimalEnergy, InterpolatesWithLessEnergyThanAnyOtherFit) {
   std::vector<double> z;
   for (const auto& p : domain.points())
     z.push_back(std::exp(0.3 * p.x()) * std::sin(0.5 * p.y()));
-  C1_quintic_spline<Epick> energy(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(energy, z, Fit::Minimal_energy);
+  C1_quintic_spline<Epick> energy(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(energy, z, Fit::MINIMAL_ENERGY);
   EXPECT_LT(certify(energy).max_residual, 1e-10); // double: rounding of O(1) values
   for (Index v = 0; v < domain.number_of_vertices(); ++v)
     EXPECT_EQ(energy.value(energy.vertex_slot(v)), z[v]);
@@ -1216,8 +1216,8 @@ TEST(MinimalEnergy, InterpolatesWithLessEnergyThanAnyOtherFit) {
                 : 0;
   }
   EXPECT_GT(thin, 0u) << "the weights are exercised";
-  for (Fit fit : {Fit::Local_polynomial, Fit::Tangent_planes, Fit::Least_squares, Fit::Adaptive}) {
-    C1_quintic_spline<Epick> other(domain, Corner_frame::Corner_and_two_stars);
+  for (Fit fit : {Fit::LOCAL_POLYNOMIAL, Fit::TANGENT_PLANES, Fit::LEAST_SQUARES, Fit::ADAPTIVE}) {
+    C1_quintic_spline<Epick> other(domain, Corner_frame::CORNER_AND_TWO_STARS);
     TS::fit_vertex_data(other, z, fit, 3);
     EXPECT_GE(weighted_energy(other), least * (1 - 1e-9)) << int(fit);
   }
@@ -1237,7 +1237,7 @@ TEST(MinimalEnergy, InterpolatesWithLessEnergyThanAnyOtherFit) {
   std::vector<double> linear;
   for (const auto& p : domain.points())
     linear.push_back(2 * p.x() - 3 * p.y() + 1);
-  TS::fit_vertex_data(energy, linear, Fit::Minimal_energy);
+  TS::fit_vertex_data(energy, linear, Fit::MINIMAL_ENERGY);
   for (Index f = 0; f < domain.number_of_faces(); ++f) {
     const auto& t = domain.face(f);
     const auto c = CGAL::centroid(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
@@ -1256,8 +1256,8 @@ TEST(MinimalEnergy, SmoothingTradesResidualsForEnergy) {
     z.push_back(std::sin(0.4 * p.x()) + noise(engine));
   double previous_energy = HUGE_VAL, previous_residual = -1;
   for (double lambda : {0.0, 0.01, 0.1, 1.0, 10.0}) {
-    C1_quintic_spline<Epick> spline(domain, Corner_frame::Corner_and_two_stars);
-    TS::fit_vertex_data(spline, z, Fit::Minimal_energy, 3, TS::Degree_selection::Cross_validation,
+    C1_quintic_spline<Epick> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::fit_vertex_data(spline, z, Fit::MINIMAL_ENERGY, 3, TS::Degree_selection::CROSS_VALIDATION,
                         lambda);
     double residual = 0;
     for (Index v = 0; v < domain.number_of_vertices(); ++v)
@@ -1275,18 +1275,18 @@ TEST(MinimalEnergy, SmoothingTradesResidualsForEnergy) {
   std::vector<Exact_kernel::FT> exact_z;
   for (std::size_t v = 0; v < exact_domain.number_of_vertices(); ++v)
     exact_z.push_back(Exact_kernel::FT(int(v % 3)));
-  C1_quintic_spline<Exact_kernel> exact(exact_domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(exact, exact_z, Fit::Minimal_energy, 3,
-                      TS::Degree_selection::Cross_validation, 1.0);
+  C1_quintic_spline<Exact_kernel> exact(exact_domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(exact, exact_z, Fit::MINIMAL_ENERGY, 3,
+                      TS::Degree_selection::CROSS_VALIDATION, 1.0);
   EXPECT_TRUE(certify(exact).certified);
   // Bad smoothing values and smoothing with another fit are refused.
-  C1_quintic_spline<Epick> spline(domain, Corner_frame::Corner_and_two_stars);
+  C1_quintic_spline<Epick> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
   for (double bad : {-1.0, std::nan(""), HUGE_VAL})
-    EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::Minimal_energy, 3,
-                                     TS::Degree_selection::Cross_validation, bad),
+    EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::MINIMAL_ENERGY, 3,
+                                     TS::Degree_selection::CROSS_VALIDATION, bad),
                  TS::Invalid_input);
-  EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::Local_polynomial, 3,
-                                   TS::Degree_selection::Cross_validation, 1.0),
+  EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::LOCAL_POLYNOMIAL, 3,
+                                   TS::Degree_selection::CROSS_VALIDATION, 1.0),
                TS::Invalid_input);
 }
 
@@ -1317,38 +1317,38 @@ TEST(MakeC1QuinticSpline, ChoosesTheFrameAndPassesEveryParameter) {
   // default: the adaptive fit of degree up to 5 with interpolated corners
   TS::Fit_statistics statistics;
   const auto made = TS::make_c1_quintic_spline(domain, z, TSP::fit_statistics(statistics));
-  C1_quintic_spline<K> by_hand(domain, Corner_frame::Corner_and_two_stars);
-  const TS::Fit_statistics expected = TS::fit_vertex_data(by_hand, z, Fit::Adaptive, 5);
-  EXPECT_EQ(made.corner_frame(), Corner_frame::Corner_and_two_stars);
+  C1_quintic_spline<K> by_hand(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  const TS::Fit_statistics expected = TS::fit_vertex_data(by_hand, z, Fit::ADAPTIVE, 5);
+  EXPECT_EQ(made.corner_frame(), Corner_frame::CORNER_AND_TWO_STARS);
   EXPECT_EQ(made.values(), by_hand.values());
   EXPECT_EQ(statistics.vertices_by_degree, expected.vertices_by_degree);
   EXPECT_EQ(statistics.vertices_by_trust, expected.vertices_by_trust);
-  EXPECT_EQ(TS::certify_continuity(made, 1).verdict, TS::Certificate_verdict::proof);
+  EXPECT_EQ(TS::certify_continuity(made, 1).verdict, TS::Certificate_verdict::PROOF);
 
   // Xu's approximation propagates the corners
-  const auto approximate = TS::make_c1_quintic_spline(domain, z, TSP::data_fit(Fit::Approximate));
-  EXPECT_EQ(approximate.corner_frame(), Corner_frame::Symmetric_stars);
+  const auto approximate = TS::make_c1_quintic_spline(domain, z, TSP::data_fit(Fit::APPROXIMATE));
+  EXPECT_EQ(approximate.corner_frame(), Corner_frame::SYMMETRIC_STARS);
 
   // every parameter arrives: local fit of degree 2 chosen by the largest rule, given gradients
   const auto local = TS::make_c1_quintic_spline(
       domain, z,
-      TSP::data_fit(Fit::Local_polynomial,
-                    TSP::local_degree(2, TSP::degree_selection(TS::Degree_selection::Largest,
+      TSP::data_fit(Fit::LOCAL_POLYNOMIAL,
+                    TSP::local_degree(2, TSP::degree_selection(TS::Degree_selection::LARGEST,
                                                                TSP::vertex_gradients(gradients)))));
-  C1_quintic_spline<K> local_by_hand(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(local_by_hand, z, Fit::Local_polynomial, 2, TS::Degree_selection::Largest, 0,
+  C1_quintic_spline<K> local_by_hand(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(local_by_hand, z, Fit::LOCAL_POLYNOMIAL, 2, TS::Degree_selection::LARGEST, 0,
                       gradients);
   EXPECT_EQ(local.values(), local_by_hand.values());
-  C1_quintic_spline<K> without_gradients(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(without_gradients, z, Fit::Local_polynomial, 2,
-                      TS::Degree_selection::Largest);
+  C1_quintic_spline<K> without_gradients(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(without_gradients, z, Fit::LOCAL_POLYNOMIAL, 2,
+                      TS::Degree_selection::LARGEST);
   EXPECT_NE(local.values(), without_gradients.values()); // the gradients were used
 
   const auto smooth = TS::make_c1_quintic_spline(
-      domain, z, TSP::smoothing(0.5, TSP::data_fit(Fit::Minimal_energy)));
-  C1_quintic_spline<K> smooth_by_hand(domain, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(smooth_by_hand, z, Fit::Minimal_energy, 3,
-                      TS::Degree_selection::Cross_validation, 0.5);
+      domain, z, TSP::smoothing(0.5, TSP::data_fit(Fit::MINIMAL_ENERGY)));
+  C1_quintic_spline<K> smooth_by_hand(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(smooth_by_hand, z, Fit::MINIMAL_ENERGY, 3,
+                      TS::Degree_selection::CROSS_VALIDATION, 0.5);
   EXPECT_EQ(smooth.values(), smooth_by_hand.values());
 
   // failures are those of fit_vertex_data(), with its messages
@@ -1372,10 +1372,10 @@ TEST(Adaptive, EqualsTheLocalFitOnResolvedData) {
   for (Index v = 0; v < grid.number_of_vertices(); ++v)
     worst = (std::max)(worst, local.resolution(v));
   EXPECT_LT(worst, 1e-3);
-  C1_quintic_spline<Epick> adaptive(grid, Corner_frame::Corner_and_two_stars),
-      plain(grid, Corner_frame::Corner_and_two_stars);
-  TS::fit_vertex_data(adaptive, z, Fit::Adaptive, 5);
-  TS::fit_vertex_data(plain, z, Fit::Local_polynomial, 5);
+  C1_quintic_spline<Epick> adaptive(grid, Corner_frame::CORNER_AND_TWO_STARS),
+      plain(grid, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(adaptive, z, Fit::ADAPTIVE, 5);
+  TS::fit_vertex_data(plain, z, Fit::LOCAL_POLYNOMIAL, 5);
   EXPECT_EQ(adaptive.values(), plain.values());
 }
 
@@ -1396,10 +1396,10 @@ TEST(Adaptive, SparseFeaturefulDataFollowTheLeastEnergy) {
   for (Index v = 0; v < domain.number_of_vertices(); ++v)
     poorly += local.resolution(v) > 0.1 ? 1 : 0;
   EXPECT_GT(poorly, domain.number_of_vertices() / 2);
-  C1_quintic_spline<Epick> adaptive(domain, Corner_frame::Corner_and_two_stars),
-      plain(domain, Corner_frame::Corner_and_two_stars);
-  const TS::Fit_statistics statistics = TS::fit_vertex_data(adaptive, z, Fit::Adaptive, 5);
-  TS::fit_vertex_data(plain, z, Fit::Local_polynomial, 5);
+  C1_quintic_spline<Epick> adaptive(domain, Corner_frame::CORNER_AND_TWO_STARS),
+      plain(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  const TS::Fit_statistics statistics = TS::fit_vertex_data(adaptive, z, Fit::ADAPTIVE, 5);
+  TS::fit_vertex_data(plain, z, Fit::LOCAL_POLYNOMIAL, 5);
   EXPECT_EQ(statistics.vertices_by_trust[0] + statistics.vertices_by_trust[1] +
                 statistics.vertices_by_trust[2],
             domain.number_of_vertices());
@@ -1469,10 +1469,10 @@ TEST(Adaptive, ThinBoundaryTrianglesDoNotSpoilTheEnergyPart) {
   std::vector<double> z;
   for (const auto& p : domain.points())
     z.push_back(f(p.x(), p.y()));
-  C1_quintic_spline<Epick> adaptive(domain, Corner_frame::Corner_and_two_stars),
-      plain(domain, Corner_frame::Corner_and_two_stars);
-  const auto statistics = TS::fit_vertex_data(adaptive, z, Fit::Adaptive, 5);
-  TS::fit_vertex_data(plain, z, Fit::Local_polynomial, 5);
+  C1_quintic_spline<Epick> adaptive(domain, Corner_frame::CORNER_AND_TWO_STARS),
+      plain(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  const auto statistics = TS::fit_vertex_data(adaptive, z, Fit::ADAPTIVE, 5);
+  TS::fit_vertex_data(plain, z, Fit::LOCAL_POLYNOMIAL, 5);
   ASSERT_GT(statistics.vertices_by_trust[1] + statistics.vertices_by_trust[2], 0u);
   std::vector<Epick::Point_2> queries;
   for (int i = 0; i < 60; ++i)
@@ -1497,7 +1497,7 @@ TEST(Spline, MapDomainKeepsAnExactSplineC1UnderAffineMaps) {
   for (Index f = 0; f < domain.number_of_faces(); ++f)
     faces.push_back(domain.face(f));
   C1_quintic_spline<Exact_kernel> spline(Planar_domain<Exact_kernel>(scaled, faces),
-                                         Corner_frame::Corner_and_two_stars);
+                                         Corner_frame::CORNER_AND_TWO_STARS);
   Random_rationals random(4);
   randomize(spline, random);
   const auto values = spline.values();
@@ -1542,12 +1542,12 @@ TEST(GivenGradients, AreInterpolatedExactlyByEveryInterpolatingFit) {
     gradients.push_back({{gx, gy}});
   }
   const auto z = sample(domain, cubic);
-  for (Fit fit : {Fit::Local_polynomial, Fit::Adaptive, Fit::Minimal_energy, Fit::Tangent_planes,
-                  Fit::Interpolate, Fit::Least_squares}) {
-    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
-    TS::fit_vertex_data(spline, z, fit, 3, TS::Degree_selection::Cross_validation, 0, gradients);
+  for (Fit fit : {Fit::LOCAL_POLYNOMIAL, Fit::ADAPTIVE, Fit::MINIMAL_ENERGY, Fit::TANGENT_PLANES,
+                  Fit::INTERPOLATE, Fit::LEAST_SQUARES}) {
+    C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::fit_vertex_data(spline, z, fit, 3, TS::Degree_selection::CROSS_VALIDATION, 0, gradients);
     EXPECT_TRUE(certify(spline).certified) << int(fit);
-    if (fit == Fit::Local_polynomial || fit == Fit::Adaptive) {
+    if (fit == Fit::LOCAL_POLYNOMIAL || fit == Fit::ADAPTIVE) {
       EXPECT_TRUE(reproduces(spline, cubic)) << int(fit);
     }
     for (Index f = 0; f < domain.number_of_faces(); ++f) {
@@ -1560,25 +1560,25 @@ TEST(GivenGradients, AreInterpolatedExactlyByEveryInterpolatingFit) {
     }
   }
   // Bad gradients.
-  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::Corner_and_two_stars);
+  C1_quintic_spline<Exact_kernel> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
   auto fit_with = [&](Fit fit, const std::vector<std::array<FT, 2>>& g) {
-    TS::fit_vertex_data(spline, z, fit, 3, TS::Degree_selection::Cross_validation, 0, g);
+    TS::fit_vertex_data(spline, z, fit, 3, TS::Degree_selection::CROSS_VALIDATION, 0, g);
   };
-  EXPECT_THROW(fit_with(Fit::Adaptive, {gradients.begin(), gradients.end() - 1}),
+  EXPECT_THROW(fit_with(Fit::ADAPTIVE, {gradients.begin(), gradients.end() - 1}),
                TS::Invalid_input);
-  EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::Minimal_energy, 3,
-                                   TS::Degree_selection::Cross_validation, 1.0, gradients),
+  EXPECT_THROW(TS::fit_vertex_data(spline, z, Fit::MINIMAL_ENERGY, 3,
+                                   TS::Degree_selection::CROSS_VALIDATION, 1.0, gradients),
                TS::Invalid_input);
-  C1_quintic_spline<Exact_kernel> symmetric(domain, Corner_frame::Symmetric_stars);
-  EXPECT_THROW(TS::fit_vertex_data(symmetric, z, Fit::Approximate, 3,
-                                   TS::Degree_selection::Cross_validation, 0, gradients),
+  C1_quintic_spline<Exact_kernel> symmetric(domain, Corner_frame::SYMMETRIC_STARS);
+  EXPECT_THROW(TS::fit_vertex_data(symmetric, z, Fit::APPROXIMATE, 3,
+                                   TS::Degree_selection::CROSS_VALIDATION, 0, gradients),
                TS::Invalid_input);
   std::vector<std::array<double, 2>> not_finite(domain.number_of_vertices(), {{0.0, 0.0}});
   not_finite[3][1] = std::nan("");
   const auto fast = random_delaunay<Epick>(40, 31);
-  C1_quintic_spline<Epick> fast_spline(fast, Corner_frame::Corner_and_two_stars);
+  C1_quintic_spline<Epick> fast_spline(fast, Corner_frame::CORNER_AND_TWO_STARS);
   EXPECT_THROW(TS::fit_vertex_data(fast_spline, std::vector<double>(fast.number_of_vertices(), 1.0),
-                                   Fit::Adaptive, 3, TS::Degree_selection::Cross_validation, 0,
+                                   Fit::ADAPTIVE, 3, TS::Degree_selection::CROSS_VALIDATION, 0,
                                    not_finite),
                TS::Invalid_input);
 }

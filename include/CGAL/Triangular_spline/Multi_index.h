@@ -58,28 +58,28 @@ struct Multi_index {
   for `m = 3` the centre (1,1,1) is corner-inner.
 */
 enum class Control_point_role {
-  Corner,
-  Star,
-  Edge_middle,
-  Corner_inner,
-  Middle_inner,
-  Deep_interior
+  CORNER,
+  STAR,
+  EDGE_MIDDLE,
+  CORNER_INNER,
+  MIDDLE_INNER,
+  DEEP_INTERIOR
 };
 
 /// returns a lowercase name of `role` ("corner", "star", "edge-middle", ...).
 inline std::string role_name(Control_point_role role) {
   switch (role) {
-  case Control_point_role::Corner:
+  case Control_point_role::CORNER:
     return "corner";
-  case Control_point_role::Star:
+  case Control_point_role::STAR:
     return "star";
-  case Control_point_role::Edge_middle:
+  case Control_point_role::EDGE_MIDDLE:
     return "edge-middle";
-  case Control_point_role::Corner_inner:
+  case Control_point_role::CORNER_INNER:
     return "corner-inner";
-  case Control_point_role::Middle_inner:
+  case Control_point_role::MIDDLE_INNER:
     return "middle-inner";
-  case Control_point_role::Deep_interior:
+  case Control_point_role::DEEP_INTERIOR:
     return "deep-interior";
   }
   return "unknown";
@@ -157,14 +157,14 @@ inline Control_point_role role(const Multi_index& index) {
   const int largest = (std::max)({index.i, index.j, index.k});
   const int smallest = (std::min)({index.i, index.j, index.k});
   if (largest == m)
-    return Control_point_role::Corner;
+    return Control_point_role::CORNER;
   if (smallest == 0) {
     // On an edge: a star touches a corner.
-    return largest == m - 1 ? Control_point_role::Star : Control_point_role::Edge_middle;
+    return largest == m - 1 ? Control_point_role::STAR : Control_point_role::EDGE_MIDDLE;
   }
   if (smallest == 1)
-    return largest == m - 2 ? Control_point_role::Corner_inner : Control_point_role::Middle_inner;
-  return Control_point_role::Deep_interior;
+    return largest == m - 2 ? Control_point_role::CORNER_INNER : Control_point_role::MIDDLE_INNER;
+  return Control_point_role::DEEP_INTERIOR;
 }
 
 /*!
@@ -174,8 +174,8 @@ inline Control_point_role role(const Multi_index& index) {
 */
 inline int owning_vertex(const Multi_index& index) {
   const Control_point_role r = role(index);
-  if (r != Control_point_role::Corner && r != Control_point_role::Star &&
-      r != Control_point_role::Corner_inner)
+  if (r != Control_point_role::CORNER && r != Control_point_role::STAR &&
+      r != Control_point_role::CORNER_INNER)
     return -1;
   for (int v = 0; v < 3; ++v)
     if (index[v] == (std::max)({index.i, index.j, index.k}))
@@ -193,12 +193,12 @@ inline int owning_vertex(const Multi_index& index) {
 */
 inline int owning_edge(const Multi_index& index) {
   const Control_point_role r = role(index);
-  if (r == Control_point_role::Edge_middle) {
+  if (r == Control_point_role::EDGE_MIDDLE) {
     for (int v = 0; v < 3; ++v)
       if (index[v] == 0)
         return v;
   }
-  if (r == Control_point_role::Middle_inner) {
+  if (r == Control_point_role::MIDDLE_INNER) {
     for (int v = 0; v < 3; ++v)
       if (index[v] == 1)
         return v;

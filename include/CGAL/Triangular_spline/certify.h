@@ -38,7 +38,7 @@ enum join_conditions_t { join_conditions };
   \code
   namespace TSP = CGAL::Triangular_spline::parameters;
   certify_continuity(spline, 1, TSP::residual_tolerance(1e-10));
-  certify_continuity(network, 2, TSP::join_conditions(Join_conditions::Lai));
+  certify_continuity(network, 2, TSP::join_conditions(Join_conditions::LAI));
   \endcode
 */
 namespace parameters {
@@ -72,7 +72,7 @@ struct Edge_certificate {
   \brief a \f$C^k\f$ certificate of a whole network: one verdict per interior edge, as
   returned by `certify_continuity()`.
 
-  `verdict` says what was established: `Certificate_verdict::proof` only when the number
+  `verdict` says what was established: `Certificate_verdict::PROOF` only when the number
   type is exact and every condition holds exactly; `within_tolerance` when every residual
   is at most the tolerance (compared exactly in the number type), and always for `double`
   arithmetic, where a zero residual may be cancelled round-off; `failed` otherwise.
@@ -82,8 +82,8 @@ struct Continuity_certificate {
   int order = 0;      ///< the order \f$k\f$ checked
   bool exact = false; ///< decided with exact arithmetic
   /// which conditions were checked
-  Join_conditions conditions = Join_conditions::Extension;
-  Certificate_verdict verdict = Certificate_verdict::failed; ///< what was established
+  Join_conditions conditions = Join_conditions::EXTENSION;
+  Certificate_verdict verdict = Certificate_verdict::FAILED; ///< what was established
   bool certified = false;  ///< every interior edge meets \f$C^k\f$ up to the tolerance
   double tolerance = 0;    ///< absolute residual tolerance used (0: only exact zeros)
   double max_residual = 0; ///< largest residual over all edges, rounded to `double`
@@ -127,7 +127,7 @@ struct Continuity_certificate {
       \cgalParamDescription{which blossom conditions are compared (they differ in what the
       residuals mean, not in the verdict of an exact check)}
       \cgalParamType{`Join_conditions`}
-      \cgalParamDefault{`Join_conditions::Extension`}
+      \cgalParamDefault{`Join_conditions::EXTENSION`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
@@ -149,7 +149,7 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
   const double tolerance =
       choose_parameter(get_parameter(np, internal_np::residual_tolerance), 0.0);
   const Join_conditions conditions =
-      choose_parameter(get_parameter(np, internal_np::join_conditions), Join_conditions::Extension);
+      choose_parameter(get_parameter(np, internal_np::join_conditions), Join_conditions::EXTENSION);
 
   Continuity_certificate certificate;
   certificate.order = k;
@@ -163,7 +163,7 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
       continue;
     const auto& ef = domain.edge_faces(e);
     const Join_report report =
-        k == 1 && conditions == Join_conditions::Extension
+        k == 1 && conditions == Join_conditions::EXTENSION
             ? check_C1_join(network.patch(ef[0]), network.patch(ef[1]), certificate.tolerance)
             : check_join(network.patch(ef[0]), network.patch(ef[1]), k, conditions,
                          certificate.tolerance);

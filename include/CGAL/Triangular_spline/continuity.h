@@ -34,14 +34,14 @@ enum class Join_conditions {
   /// i.e. the control points of B next to the edge equal those of A's polynomial extended
   /// over B's triangle. Order 0 is Xu's (3.4), order 1 is (3.5). \f$\sum_l (m-l+1)\f$
   /// conditions, the minimal number.
-  Extension,
+  EXTENSION,
   /// Lai's construction as rephrased by Mann (eqs. (1), (2)): the same count, but at order
   /// \f$l\f$ the compared blossom values carry \f$\lceil l/2\rceil\f$ copies of \f$q\f$ and
   /// \f$\lfloor l/2\rfloor\f$ of \f$p\f$, the balanced points the averaging adjustment uses.
-  Lai,
+  LAI,
   /// every multiset \f$p^g q^h r^i s^j\f$ with \f$i + j \ge m - k\f$ (Lemma 3.1.4 verbatim);
   /// redundant, meant for cross-checking.
-  Complete
+  COMPLETE
 };
 
 /*!
@@ -50,19 +50,19 @@ enum class Join_conditions {
 */
 enum class Certificate_verdict {
   /// every condition holds exactly, decided in an exact number type: a proof
-  proof,
+  PROOF,
   /// every condition holds up to the tolerance (or `double` arithmetic was used): not a proof
-  within_tolerance,
+  WITHIN_TOLERANCE,
   /// some condition fails, even with the tolerance
-  failed
+  FAILED
 };
 
 /// returns `"proof"`, `"within_tolerance"` or `"failed"`
 inline const char* verdict_name(Certificate_verdict verdict) {
   switch (verdict) {
-  case Certificate_verdict::proof:
+  case Certificate_verdict::PROOF:
     return "proof";
-  case Certificate_verdict::within_tolerance:
+  case Certificate_verdict::WITHIN_TOLERANCE:
     return "within_tolerance";
   default:
     return "failed";
@@ -74,8 +74,8 @@ inline const char* verdict_name(Certificate_verdict verdict) {
 inline Certificate_verdict certificate_verdict(bool exact, std::size_t failed,
                                                std::size_t nonzero) {
   if (failed > 0)
-    return Certificate_verdict::failed;
-  return exact && nonzero == 0 ? Certificate_verdict::proof : Certificate_verdict::within_tolerance;
+    return Certificate_verdict::FAILED;
+  return exact && nonzero == 0 ? Certificate_verdict::PROOF : Certificate_verdict::WITHIN_TOLERANCE;
 }
 
 /*!
@@ -205,7 +205,7 @@ inline void summarize_conditions(Join_report& report) {
 template <class GeomTraits, class Value>
 Join_report
 check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<GeomTraits, Value>& B,
-           int k, Join_conditions conditions = Join_conditions::Extension, double tolerance = 0) {
+           int k, Join_conditions conditions = Join_conditions::EXTENSION, double tolerance = 0) {
   using FT = typename GeomTraits::FT;
   using Weights = typename Bezier_triangle<GeomTraits, Value>::Weights;
   const int m = A.degree();
@@ -252,13 +252,13 @@ check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<Ge
   for (int l = 0; l <= k; ++l) {
     for (int i = 0; i <= m - l; ++i) {
       switch (conditions) {
-      case Join_conditions::Extension:
+      case Join_conditions::EXTENSION:
         report.conditions.push_back(evaluate(0, l, i));
         break;
-      case Join_conditions::Lai:
+      case Join_conditions::LAI:
         report.conditions.push_back(evaluate(l / 2, l - l / 2, i));
         break;
-      case Join_conditions::Complete:
+      case Join_conditions::COMPLETE:
         for (int g = 0; g <= l; ++g)
           report.conditions.push_back(evaluate(g, l - g, i));
         break;
@@ -279,7 +279,7 @@ check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<Ge
   \f$f_B(q r^i s^{m-1-i}) = \lambda f_A(p r^i s^{m-1-i}) + \mu f_A(r^{i+1} s^{m-1-i}) +
   \nu f_A(r^i s^{m-i})\f$ with \f$q = \lambda p + \mu r + \nu s\f$.
 
-  The conditions and residuals are those of `check_join(A, B, 1, Join_conditions::Extension)`
+  The conditions and residuals are those of `check_join(A, B, 1, Join_conditions::EXTENSION)`
   but no blossom is evaluated: about \f$3m\f$ multiplications per edge, which is what makes
   exact certification of large splines affordable.
 */

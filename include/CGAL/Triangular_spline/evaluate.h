@@ -227,12 +227,12 @@ evaluate_at(const TriangularSplineNetwork& network,
 */
 enum class Outside {
   /// no value (`std::nullopt`)
-  No_value,
+  NO_VALUE,
   /// the value, gradient and Hessian of the spline at the nearest boundary point \f$q\f$
-  Nearest,
+  NEAREST,
   /// the linear extrapolation \f$F(q) + \nabla F(q) \cdot (p - q)\f$ from the nearest
   /// boundary point \f$q\f$: gradient \f$\nabla F(q)\f$, Hessian zero
-  Linear
+  LINEAR
 };
 
 /*!
@@ -260,7 +260,7 @@ enum class Outside {
   \param order the highest derivative order wanted (0, 1 or 2); higher derivatives are zero
   and are not computed
   \return one entry per query, in input order: the jet, or `std::nullopt` where the query is
-  not finite, or outside the domain with `Outside::No_value`
+  not finite, or outside the domain with `Outside::NO_VALUE`
   \pre `locator` was built on `network.domain()` or an identical domain
 */
 template <class TriangularSplineNetwork>
@@ -268,7 +268,7 @@ std::vector<std::optional<Point_jet<internal::Network_value_t<TriangularSplineNe
 evaluate_jets(const TriangularSplineNetwork& network,
               const Domain_locator<typename TriangularSplineNetwork::Geom_traits>& locator,
               const std::vector<typename TriangularSplineNetwork::Geom_traits::Point_2>& queries,
-              Outside outside = Outside::No_value, int order = 2) {
+              Outside outside = Outside::NO_VALUE, int order = 2) {
   CGAL_precondition(internal::is_locator_of(network, locator));
   using GeomTraits = typename TriangularSplineNetwork::Geom_traits;
   using Patch = internal::Network_patch_t<TriangularSplineNetwork>;
@@ -290,15 +290,15 @@ evaluate_jets(const TriangularSplineNetwork& network,
       jets[q] = jet_at(*location, order);
       continue;
     }
-    if (outside == Outside::No_value)
+    if (outside == Outside::NO_VALUE)
       continue;
     const auto nearest = locator.nearest_boundary_point(p);
     if (!nearest)
       continue;
     // the extrapolated value needs the gradient even when only values are asked for
     Point_jet<Value> jet =
-        jet_at(nearest->location, outside == Outside::Linear ? (std::max)(order, 1) : order);
-    if (outside == Outside::Linear) {
+        jet_at(nearest->location, outside == Outside::LINEAR ? (std::max)(order, 1) : order);
+    if (outside == Outside::LINEAR) {
       const FT dx = p.x() - nearest->point.x(), dy = p.y() - nearest->point.y();
       Value value = jet.value + dx * jet.gradient[0] + dy * jet.gradient[1];
       jet.value = std::move(value);
@@ -322,7 +322,7 @@ std::optional<Point_jet<internal::Network_value_t<TriangularSplineNetwork>>>
 evaluate_jet(const TriangularSplineNetwork& network,
              const Domain_locator<typename TriangularSplineNetwork::Geom_traits>& locator,
              const typename TriangularSplineNetwork::Geom_traits::Point_2& query,
-             Outside outside = Outside::No_value, int order = 2) {
+             Outside outside = Outside::NO_VALUE, int order = 2) {
   return evaluate_jets(network, locator,
                        std::vector<typename TriangularSplineNetwork::Geom_traits::Point_2>{query},
                        outside, order)

@@ -324,7 +324,7 @@ int local_vertex(const Bezier_triangle<GeomTraits, Value>& patch,
   be listed in any order: the shared edge \f$V_1V_2\f$ is found by exact point comparison).
   For each \f$i + j = n - k\f$ the blossoms of both patches are evaluated at Lai's balanced
   point \f$(V_1^i V_2^j D_0^{\lceil k/2\rceil} V_0^{\lfloor k/2\rfloor})\f$ (the values
-  `check_join(A, B, k, Join_conditions::Lai)` compares), and the one control point of `A`
+  `check_join(A, B, k, Join_conditions::LAI)` compares), and the one control point of `A`
   with \f$k\f$ copies of \f$V_0\f$, \f$A(V_0^k V_1^i V_2^j)\f$, and the one of `B` with
   \f$k\f$ copies of \f$D_0\f$ are moved so that both values become their average. Given
   \f$C^{k-1}\f$, the blossom value of `A` involves \f$A(V_0^k V_1^i V_2^j)\f$ with coefficient
@@ -377,7 +377,7 @@ Join_adjustment adjust_join(Bezier_triangle<GeomTraits, Value>& A,
   }
   if (k > 0) {
     const double scale = (std::max)(internal::control_scale(A), internal::control_scale(B));
-    const Join_report report = check_join(A, B, k - 1, Join_conditions::Lai, tolerance * scale);
+    const Join_report report = check_join(A, B, k - 1, Join_conditions::LAI, tolerance * scale);
     if (!report.holds)
       throw Invalid_input(where + "the patches must meet C^" + std::to_string(k - 1) +
                           " before the C^" + std::to_string(k) + " adjustment, but " +

@@ -120,10 +120,10 @@ auto barycentric_weights(const Point_2& x, const Point_2& a, const Point_2& b, c
 enum class Corner_frame {
   /// three star points spread evenly around the vertex (Xu Fig. 4.1): the corner point
   /// itself is propagated, so the spline approximates the vertex data
-  Symmetric_stars,
+  SYMMETRIC_STARS,
   /// the corner point and the two star points whose directions are closest to orthogonal:
   /// the corner can be forced through a data value (interpolation, Xu §4.4.2)
-  Corner_and_two_stars
+  CORNER_AND_TWO_STARS
 };
 
 /*!
@@ -132,11 +132,11 @@ enum class Corner_frame {
   stored once, in the slot of the vertex, edge or face it belongs to.
 */
 enum class Slot_kind {
-  Corner,       ///< \f$f(v^5)\f$, one per vertex
-  Star,         ///< \f$f(v^4 w)\f$, two per edge
-  Edge_middle,  ///< \f$f(v^3 w^2)\f$, two per edge
-  Corner_inner, ///< \f$f(a^3 b c)\f$, three per face
-  Middle_inner  ///< \f$f(a b^2 c^2)\f$ (the flip points of interior edges), three per face
+  CORNER,       ///< \f$f(v^5)\f$, one per vertex
+  STAR,         ///< \f$f(v^4 w)\f$, two per edge
+  EDGE_MIDDLE,  ///< \f$f(v^3 w^2)\f$, two per edge
+  CORNER_INNER, ///< \f$f(a^3 b c)\f$, three per face
+  MIDDLE_INNER  ///< \f$f(a b^2 c^2)\f$ (the flip points of interior edges), three per face
 };
 
 /*!
@@ -228,7 +228,7 @@ public:
     \param domain the triangulated domain, copied into the spline
     \param frame which points of each corner region are prescribed
   */
-  explicit C1_quintic_spline(Domain domain, Corner_frame frame = Corner_frame::Symmetric_stars)
+  explicit C1_quintic_spline(Domain domain, Corner_frame frame = Corner_frame::SYMMETRIC_STARS)
       : m_domain(std::move(domain)), m_frame(frame) {
     const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges(),
                       F = m_domain.number_of_faces();
@@ -267,12 +267,12 @@ public:
   Slot_kind kind(Slot s) const {
     const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
     if (s < V)
-      return Slot_kind::Corner;
+      return Slot_kind::CORNER;
     if (s < V + 4 * E) {
       const std::size_t t = (s - V) % 4;
-      return (t == 0 || t == 3) ? Slot_kind::Star : Slot_kind::Edge_middle;
+      return (t == 0 || t == 3) ? Slot_kind::STAR : Slot_kind::EDGE_MIDDLE;
     }
-    return (s - V - 4 * E) % 6 < 3 ? Slot_kind::Corner_inner : Slot_kind::Middle_inner;
+    return (s - V - 4 * E) % 6 < 3 ? Slot_kind::CORNER_INNER : Slot_kind::MIDDLE_INNER;
   }
 
   /// returns the polar label of slot `s`: the domain vertices and multiplicities
@@ -529,7 +529,7 @@ private:
       }
       return q;
     };
-    if (m_frame == Corner_frame::Symmetric_stars) {
+    if (m_frame == Corner_frame::SYMMETRIC_STARS) {
       const bool boundary = m_domain.is_boundary_vertex(v);
       // Stars spread evenly: interior i, i+d/3, i+2d/3; boundary both ends and a middle one.
       const std::size_t shifts = boundary ? d - 2 : d;
@@ -589,13 +589,13 @@ private:
 
   // How the edge-middle point next to end `vertex` of an interior edge is computed.
   enum class End_route : unsigned char {
-    Regular,    // from the corner diamond at the end (the usual rule)
-    Degenerate, // apexes exactly collinear with the end (or up to rounding in double)
-    Thin        // not collinear, but the regular rule's weights exceed the bound
+    REGULAR,    // from the corner diamond at the end (the usual rule)
+    DEGENERATE, // apexes exactly collinear with the end (or up to rounding in double)
+    THIN        // not collinear, but the regular rule's weights exceed the bound
   };
   struct Edge_route {
     Index end = Domain::null_index; // the re-routed end, or null_index
-    End_route kind = End_route::Regular;
+    End_route kind = End_route::REGULAR;
     double regular_weight = 0; // largest |weight| the regular rule at `end` would have
     std::array<FT, 3> mu;      // end = mu0 apex_left + mu1 other end + mu2 apex_right
   };
@@ -642,9 +642,9 @@ private:
       const Index r = ends[std::size_t(side)];
       Edge_route route;
       if (exact_end[k] || numerical_end[k])
-        route.kind = End_route::Degenerate;
+        route.kind = End_route::DEGENERATE;
       else if (weight[std::size_t(side)] > propagation_weight_bound && allow_thin[r])
-        route.kind = End_route::Thin;
+        route.kind = End_route::THIN;
       else
         continue;
       route.end = r;
@@ -754,7 +754,7 @@ private:
         std::size_t thinnest = k;
         for (std::size_t i = 0; i < k; ++i) {
           const Edge_route& route = routes[eb[i]];
-          if (route.kind == End_route::Thin &&
+          if (route.kind == End_route::THIN &&
               (thinnest == k || route.regular_weight < routes[eb[thinnest]].regular_weight))
             thinnest = i;
         }
@@ -776,7 +776,7 @@ private:
         const Point_2& p_before = m_domain.point(nb[(i + k - 1) % k]);
         const Point_2& p_after = m_domain.point(nb[(i + 1) % (boundary ? k + 1 : k)]);
         Link link{e, before, after, FT(0), FT(0), FT(0), false};
-        if (route.kind == End_route::Degenerate) {
+        if (route.kind == End_route::DEGENERATE) {
           // r = (1-t) p_before + t p_after (t by projection: exact when r is on the segment,
           // the nearest point of the segment for a frame collinear up to rounding)
           const Point_2& pr = m_domain.point(r);
@@ -906,8 +906,8 @@ private:
       thin_vertex_of_rule.push_back(Domain::null_index);
       Degenerate_frame frame{e, r, m_domain.opposite_vertex(ef[0], e),
                              m_domain.opposite_vertex(ef[1], e), false};
-      frame.numerical = route.kind == End_route::Degenerate && !std::isinf(route.regular_weight);
-      frame.thin = route.kind == End_route::Thin;
+      frame.numerical = route.kind == End_route::DEGENERATE && !std::isinf(route.regular_weight);
+      frame.thin = route.kind == End_route::THIN;
       frame.regular_weight = route.regular_weight;
       m_frames.push_back(frame);
     }

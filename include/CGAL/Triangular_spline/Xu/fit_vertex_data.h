@@ -33,28 +33,28 @@ namespace Triangular_spline {
 enum class Fit {
   /// every free point is the polar-value blend of its patch's corner data,
   /// \f$f(a^i b^j c^k) \approx (i z_a + j z_b + k z_c)/5\f$ (Xu §7.3, §6.2.4); with
-  /// `Corner_frame::Symmetric_stars` the corners are propagated: the spline approximates
-  Approximate,
-  /// as `Approximate`, and every corner point is prescribed to the data value (Xu §4.4.2);
-  /// needs `Corner_frame::Corner_and_two_stars`
-  Interpolate,
+  /// `Corner_frame::SYMMETRIC_STARS` the corners are propagated: the spline approximates
+  APPROXIMATE,
+  /// as `APPROXIMATE`, and every corner point is prescribed to the data value (Xu §4.4.2);
+  /// needs `Corner_frame::CORNER_AND_TWO_STARS`
+  INTERPOLATE,
   /// interpolation of values and of gradients estimated at every vertex (least squares over
   /// its neighbours): each free point takes the tangent-plane value of its nearest corner
   /// (averaged on ties), at its domain point, the degree-1 case of Mann's nearest-vertex
   /// rule; this tilts the corner frames along the data (Xu §4.4.5) instead of
-  /// flattening them. Needs `Corner_frame::Corner_and_two_stars`
-  Tangent_planes,
+  /// flattening them. Needs `Corner_frame::CORNER_AND_TWO_STARS`
+  TANGENT_PLANES,
   /// interpolation of the values; the other free points are chosen so that ALL control
   /// points (free and propagated) are as close as possible, in least squares, to the
-  /// `Tangent_planes` targets: every control value is a linear function of the free ones,
+  /// `TANGENT_PLANES` targets: every control value is a linear function of the free ones,
   /// and the normal equations are solved with a sparse Cholesky factorization (Eigen). This
   /// is the remedy for the amplification of Xu §4.4.5: thin frames propagate with large
   /// weights, and the least-squares choice keeps the propagated points near the data
   /// instead of letting them overshoot. The solve runs in `double`; the free values are
   /// then converted to `FT` and propagated in `FT`, so an exact spline is still exactly C^1
   /// (linear data is then reproduced up to the solve's rounding). The targets are those of
-  /// `Local_polynomial`. Needs `Corner_frame::Corner_and_two_stars`
-  Least_squares,
+  /// `LOCAL_POLYNOMIAL`. Needs `Corner_frame::CORNER_AND_TWO_STARS`
+  LEAST_SQUARES,
   /// interpolation of the values; every free point takes the polar value of the local
   /// polynomial (`Local_polynomials`, degree 3 by default) of its nearest corner, averaged
   /// on ties. All points of a corner region, and every corner-inner and edge-middle point,
@@ -63,12 +63,12 @@ enum class Fit {
   /// neighbouring vertices. Data
   /// from a polynomial of degree at most the local degree are reproduced exactly (exactly
   /// with an exact number type); local in time and memory. Needs
-  /// `Corner_frame::Corner_and_two_stars`
-  Local_polynomial,
+  /// `Corner_frame::CORNER_AND_TWO_STARS`
+  LOCAL_POLYNOMIAL,
   /// interpolation of the values with the least thin-plate energy
   /// \f$\int f_{xx}^2 + 2 f_{xy}^2 + f_{yy}^2\f$ over the whole spline space (exact Bernstein
   /// Gram matrices, `thin_plate_energy_matrix()`; the sparse normal equations are solved in
-  /// `double` and the free values converted to `FT`, as for `Least_squares`): the fairest
+  /// `double` and the free values converted to `FT`, as for `LEAST_SQUARES`): the fairest
   /// interpolant, Xu §8.3's open problem; the spline analogue of a thin-plate spline. Thin
   /// triangles (shape quality \f$q = 4\sqrt{3}\,\mathrm{area} / \sum \mathrm{edge}^2 < 0.1\f$)
   /// count with weight \f$(q/0.1)^3\f$: their energy grows as the inverse cube of their
@@ -78,26 +78,26 @@ enum class Fit {
   /// \f$\sum_v (s(v) - z_v)^2 + \lambda h^2 E(s)\f$, \f$h^2\f$ the domain's area per
   /// vertex, for noisy data. Reproduces linear data exactly (up to the solve's rounding in
   /// exact builds). A global sparse solve: superlinear time and memory. Needs
-  /// `Corner_frame::Corner_and_two_stars`
-  Minimal_energy,
-  /// interpolation of the values; `Local_polynomial` where the local polynomials resolve the
-  /// data, `Minimal_energy` where they do not, blended in between: the most accurate fit on
+  /// `Corner_frame::CORNER_AND_TWO_STARS`
+  MINIMAL_ENERGY,
+  /// interpolation of the values; `LOCAL_POLYNOMIAL` where the local polynomials resolve the
+  /// data, `MINIMAL_ENERGY` where they do not, blended in between: the most accurate fit on
   /// dense smooth data and on sparse or rough data alike. Each vertex's resolution
   /// \f$\rho_v\f$ (`Local_polynomials::resolution()`, the leave-one-out residual of its
   /// polynomial relative to a plane's) gives a trust \f$\tau_v\f$: 1 for \f$\rho_v \le 0.1\f$,
   /// 0 for \f$\rho_v \ge 0.5\f$, linear between. Free points whose nearest vertices are all
-  /// trusted take their local value (exactly as `Local_polynomial`); the others are chosen by
+  /// trusted take their local value (exactly as `LOCAL_POLYNOMIAL`); the others are chosen by
   /// least thin-plate energy over the untrusted vertices and three rings around them, with
   /// the local values beyond as boundary values (the margin keeps the kinks of local values
   /// in thin boundary triangles, tiny in value but huge in energy, from bending the surface
   /// next to them), then each nearest vertex's share
   /// becomes \f$\tau_v\f$ times its polynomial's value plus \f$1-\tau_v\f$ times the energy
   /// value. Data from a polynomial of degree at most the local degree leave every vertex
-  /// trusted and are reproduced exactly, as by `Local_polynomial`. The energy solve is global
+  /// trusted and are reproduced exactly, as by `LOCAL_POLYNOMIAL`. The energy solve is global
   /// over the untrusted region: beyond \f$10^4\f$ untrusted vertices it is skipped and the
-  /// fit is `Local_polynomial` (`Fit_statistics::energy_skipped`). Needs
-  /// `Corner_frame::Corner_and_two_stars`
-  Adaptive
+  /// fit is `LOCAL_POLYNOMIAL` (`Fit_statistics::energy_skipped`). Needs
+  /// `Corner_frame::CORNER_AND_TWO_STARS`
+  ADAPTIVE
 };
 
 /*!
@@ -246,7 +246,7 @@ void set_solved_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
   }
 }
 
-// Least-squares choice of the free values (Fit::Least_squares): corners fixed to the data,
+// Least-squares choice of the free values (Fit::LEAST_SQUARES): corners fixed to the data,
 // the free slots for which fixed(s, value) is true to that value, then min sum_s |value(s) -
 // target(s)|^2 over all slots by the normal equations.
 template <class GeomTraits, class Value, class Target, class Fixed>
@@ -289,7 +289,7 @@ double thin_triangle_weight(const Point_2& p, const Point_2& q, const Point_2& r
   return quality >= 0.1 ? 1.0 : std::pow(quality / 0.1, 3);
 }
 
-// Minimal thin-plate energy (Fit::Minimal_energy): corners fixed to the data, the free slots
+// Minimal thin-plate energy (Fit::MINIMAL_ENERGY): corners fixed to the data, the free slots
 // for which fixed(s, value) is true fixed to that value, and min sum_f b_f^T G_f b_f over
 // the others; with smoothing > 0 the corners are unknowns too and the objective is
 // sum_v |s(v) - z_v|^2 + smoothing * h^2 * energy, h^2 the domain's area per vertex (so
@@ -413,17 +413,17 @@ constexpr int adaptive_energy_margin_rings = 3;
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief what `fit_vertex_data()` did: the degrees of the local polynomials
-  (`Local_polynomial` and `Least_squares` fits; all zero otherwise).
+  (`LOCAL_POLYNOMIAL` and `LEAST_SQUARES` fits; all zero otherwise).
 */
 struct Fit_statistics {
   /// `vertices_by_degree[d]`: the number of vertices whose local polynomial has degree `d`
   std::array<std::size_t, 6> vertices_by_degree{};
-  /// `Adaptive` fit: the number of vertices whose polynomial is trusted fully (`[0]`),
+  /// `ADAPTIVE` fit: the number of vertices whose polynomial is trusted fully (`[0]`),
   /// blended with the minimal-energy values (`[1]`), or not used at all (`[2]`)
   std::array<std::size_t, 3> vertices_by_trust{};
-  /// `Adaptive` fit: `true` if more than 10^4 vertices were not fully trusted, so that the
+  /// `ADAPTIVE` fit: `true` if more than 10^4 vertices were not fully trusted, so that the
   /// global energy solve was skipped and every vertex followed its polynomial, as in
-  /// `Local_polynomial`
+  /// `LOCAL_POLYNOMIAL`
   bool energy_skipped = false;
 };
 
@@ -434,23 +434,23 @@ struct Fit_statistics {
 
   Every mode reproduces data sampled from a linear function exactly (every prescribed point
   is then the linear function's polar value, and propagation preserves it; for
-  `Local_polynomial` and `Least_squares` with `local_degree` at least 1).
-  `local_degree` is the largest degree of the local polynomials of `Local_polynomial`,
-  `Least_squares` and `Adaptive` (0..5); `selection` how they choose it. `smoothing` (at least
-  0) is the \f$\lambda\f$ of `Minimal_energy`; 0 interpolates. `given_gradients` (one per
-  vertex, or empty to estimate them) are interpolated by every fit but `Approximate`: each
+  `LOCAL_POLYNOMIAL` and `LEAST_SQUARES` with `local_degree` at least 1).
+  `local_degree` is the largest degree of the local polynomials of `LOCAL_POLYNOMIAL`,
+  `LEAST_SQUARES` and `ADAPTIVE` (0..5); `selection` how they choose it. `smoothing` (at least
+  0) is the \f$\lambda\f$ of `MINIMAL_ENERGY`; 0 interpolates. `given_gradients` (one per
+  vertex, or empty to estimate them) are interpolated by every fit but `APPROXIMATE`: each
   star point \f$f(v^4 w)\f$ becomes \f$z_v + \nabla z_v \cdot (w - v)/5\f$, so the spline's
   gradient at every vertex is the given one (exactly with an exact number type); the other
   free points follow the fit.
   \throws Invalid_input if `values` or `given_gradients` has the wrong size or a non-finite
   value, if `smoothing` is negative or not finite or given to another fit than
-  `Minimal_energy` or with gradients, if gradients are given to `Approximate`, or if a fit
-  other than `Approximate` is asked of a spline whose corner points are not free.
+  `MINIMAL_ENERGY` or with gradients, if gradients are given to `APPROXIMATE`, or if a fit
+  other than `APPROXIMATE` is asked of a spline whose corner points are not free.
 */
 template <class GeomTraits, class Value>
 Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
                                const std::vector<Value>& values, Fit fit, int local_degree = 3,
-                               Degree_selection selection = Degree_selection::Cross_validation,
+                               Degree_selection selection = Degree_selection::CROSS_VALIDATION,
                                double smoothing = 0,
                                const std::vector<std::array<Value, 2>>& given_gradients = {}) {
   using FT = typename GeomTraits::FT;
@@ -462,9 +462,9 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
   for (const Value& v : values)
     if (!is_finite_value(v))
       throw Invalid_input("fit: non-finite data value");
-  if (fit != Fit::Approximate && spline.corner_frame() != Corner_frame::Corner_and_two_stars)
+  if (fit != Fit::APPROXIMATE && spline.corner_frame() != Corner_frame::CORNER_AND_TWO_STARS)
     throw Invalid_input("fit: interpolation needs corner points to be prescribed "
-                        "(build the spline with Corner_frame::Corner_and_two_stars)");
+                        "(build the spline with Corner_frame::CORNER_AND_TWO_STARS)");
   const bool given = !given_gradients.empty();
   if (given) {
     if (given_gradients.size() != domain.number_of_vertices())
@@ -473,20 +473,20 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     for (const auto& g : given_gradients)
       if (!is_finite_value(g[0]) || !is_finite_value(g[1]))
         throw Invalid_input("fit: non-finite gradient");
-    if (fit == Fit::Approximate)
+    if (fit == Fit::APPROXIMATE)
       throw Invalid_input("fit: given gradients need an interpolating fit (not approximate)");
     if (smoothing > 0)
       throw Invalid_input("fit: given gradients are interpolated; smoothing would move the "
                           "values they belong to");
   }
   std::vector<std::array<Value, 2>> gradients;
-  if (fit == Fit::Tangent_planes)
+  if (fit == Fit::TANGENT_PLANES)
     gradients = given ? given_gradients : estimate_gradients(domain, values);
   // With given gradients every star point is the tangent plane's: z_v + g_v.(w - v)/5 for
   // the star f(v^4 w). Its corner region is then that plane, so the spline interpolates
   // the gradient at every vertex.
   auto given_star = [&](Slot s, Value& star) {
-    if (!given || spline.kind(s) != Slot_kind::Star)
+    if (!given || spline.kind(s) != Slot_kind::STAR)
       return false;
     const auto label = spline.polar_label(s);
     const auto [v, w] = label[0].second == 4 ? std::pair(label[0].first, label[1].first)
@@ -497,7 +497,7 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     return true;
   };
   std::optional<Local_polynomials<GeomTraits, Value>> local;
-  if (fit == Fit::Local_polynomial || fit == Fit::Least_squares || fit == Fit::Adaptive)
+  if (fit == Fit::LOCAL_POLYNOMIAL || fit == Fit::LEAST_SQUARES || fit == Fit::ADAPTIVE)
     local.emplace(domain, values, local_degree, selection);
   Fit_statistics statistics;
   if (local)
@@ -510,7 +510,7 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     if (given_star(s, v))
       return v;
     const auto label = spline.polar_label(s);
-    if (fit == Fit::Approximate || fit == Fit::Interpolate) {
+    if (fit == Fit::APPROXIMATE || fit == Fit::INTERPOLATE) {
       for (const auto& [vertex, multiplicity] : label)
         v = v + (FT(multiplicity) / FT(5)) * values[vertex];
       return v;
@@ -545,12 +545,12 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
   };
   if (!(smoothing >= 0) || !std::isfinite(smoothing))
     throw Invalid_input("fit: the smoothing must be a finite number >= 0");
-  if (smoothing > 0 && fit != Fit::Minimal_energy)
+  if (smoothing > 0 && fit != Fit::MINIMAL_ENERGY)
     throw Invalid_input("fit: smoothing needs the minimal-energy fit");
   // Adaptive fit: trust in each vertex's polynomial, from how well it resolves the data.
   std::vector<double> trust;
   bool blend_energy = false;
-  if (fit == Fit::Adaptive) {
+  if (fit == Fit::ADAPTIVE) {
     const auto [low, high] = internal::adaptive_resolution_thresholds();
     trust.resize(domain.number_of_vertices());
     for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v) {
@@ -565,7 +565,7 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     statistics.energy_skipped = untrusted > internal::adaptive_energy_vertex_limit;
     blend_energy = untrusted > 0 && !statistics.energy_skipped;
   }
-  if (fit == Fit::Minimal_energy) {
+  if (fit == Fit::MINIMAL_ENERGY) {
     internal::minimal_energy_free_values(spline, values, smoothing, given_star);
   } else if (blend_energy) {
     auto nearest = [&](Slot s) {
@@ -645,7 +645,7 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       }
       spline.set_free_value(s, ties.size() == 1 ? v : Value((FT(1) / FT(int(ties.size()))) * v));
     }
-  } else if (fit == Fit::Least_squares) {
+  } else if (fit == Fit::LEAST_SQUARES) {
     internal::least_squares_free_values(spline, values, target, given_star);
   } else {
     for (Slot s : spline.free_slots())

@@ -33,17 +33,17 @@ namespace Triangular_spline {
 */
 enum class Degree_selection {
   /// the largest degree that the neighbourhood determines
-  Largest,
+  LARGEST,
   /// leave-one-out cross-validation: the lowest degree whose leave-one-out residuals over
   /// the neighbourhood (weighted mean square) are within 10% of the best degree's; smooth
   /// data get high degrees, rough data low ones
-  Cross_validation
+  CROSS_VALIDATION
 };
 
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief one local polynomial per domain vertex, fitted to the data around it: the
-  estimate of the underlying function that the `Fit::Local_polynomial` fit of a
+  estimate of the underlying function that the `Fit::LOCAL_POLYNOMIAL` fit of a
   `C1_quintic_spline` reads its control points from.
 
   Around vertex \f$v\f$ the polynomial \f$p_v\f$ of degree \f$d_v \le\f$ `max_degree`
@@ -91,7 +91,7 @@ public:
     \throws Invalid_input if `values` has the wrong size or `max_degree` is not in 0..5
   */
   Local_polynomials(const Domain& domain, const std::vector<Value>& values, int max_degree = 3,
-                    Degree_selection selection = Degree_selection::Cross_validation,
+                    Degree_selection selection = Degree_selection::CROSS_VALIDATION,
                     std::size_t threads = 0)
       : m_domain(&domain), m_max_degree(max_degree), m_selection(selection) {
     if (values.size() != domain.number_of_vertices())
@@ -380,7 +380,7 @@ private:
                                  CGAL::to_double(Value_traits<Value>::coordinate(values[v], k))));
     const double floor = 1e-24 * data_scale * data_scale;
     std::size_t chosen = candidates.size() - 1;
-    if (m_selection == Degree_selection::Cross_validation) {
+    if (m_selection == Degree_selection::CROSS_VALIDATION) {
       double best = std::numeric_limits<double>::infinity();
       for (const auto& candidate : candidates)
         best = (std::min)(best, candidate.score);

@@ -39,7 +39,7 @@ enum fit_statistics_t { fit_statistics };
   (starts a pack) or `f(value, np)` (appends to `np`), e.g.
   \code
   namespace TSP = CGAL::Triangular_spline::parameters;
-  auto spline = make_c1_quintic_spline(domain, z, TSP::data_fit(Fit::Minimal_energy,
+  auto spline = make_c1_quintic_spline(domain, z, TSP::data_fit(Fit::MINIMAL_ENERGY,
                                                                 TSP::smoothing(0.1)));
   \endcode
   `vertex_gradients()` and `fit_statistics()` keep a reference to their argument, which must
@@ -95,9 +95,9 @@ fit_statistics(Fit_statistics& statistics, const Named_function_parameters<T, Ta
   (one per domain vertex): the one call from a triangulation and heights to a certified
   surface.
 
-  The corner frame follows from the fit: `Fit::Approximate` propagates the corner points
-  (`Corner_frame::Symmetric_stars`, Xu's scheme), every other fit interpolates them
-  (`Corner_frame::Corner_and_two_stars`). The free control points are then set by
+  The corner frame follows from the fit: `Fit::APPROXIMATE` propagates the corner points
+  (`Corner_frame::SYMMETRIC_STARS`, Xu's scheme), every other fit interpolates them
+  (`Corner_frame::CORNER_AND_TWO_STARS`). The free control points are then set by
   `fit_vertex_data()` and propagated. With an exact number type the result is exactly
   \f$C^1\f$ (`certify_continuity(spline, 1)` proves it).
 
@@ -112,11 +112,11 @@ fit_statistics(Fit_statistics& statistics, const Named_function_parameters<T, Ta
     \cgalParamNBegin{data_fit}
       \cgalParamDescription{how the free control points are set (see `Fit`)}
       \cgalParamType{`Fit`}
-      \cgalParamDefault{`Fit::Adaptive`, the most accurate}
+      \cgalParamDefault{`Fit::ADAPTIVE`, the most accurate}
     \cgalParamNEnd
     \cgalParamNBegin{local_degree}
       \cgalParamDescription{the largest degree of the local polynomials of
-      `Local_polynomial`, `Least_squares` and `Adaptive`}
+      `LOCAL_POLYNOMIAL`, `LEAST_SQUARES` and `ADAPTIVE`}
       \cgalParamType{`int`}
       \cgalParamDefault{`5`}
       \cgalParamExtra{0 to 5; lowered where a neighbourhood does not determine it}
@@ -124,10 +124,10 @@ fit_statistics(Fit_statistics& statistics, const Named_function_parameters<T, Ta
     \cgalParamNBegin{degree_selection}
       \cgalParamDescription{how each vertex's degree is chosen}
       \cgalParamType{`Degree_selection`}
-      \cgalParamDefault{`Degree_selection::Cross_validation`}
+      \cgalParamDefault{`Degree_selection::CROSS_VALIDATION`}
     \cgalParamNEnd
     \cgalParamNBegin{smoothing}
-      \cgalParamDescription{the \f$\lambda\f$ of `Fit::Minimal_energy` (0 interpolates)}
+      \cgalParamDescription{the \f$\lambda\f$ of `Fit::MINIMAL_ENERGY` (0 interpolates)}
       \cgalParamType{`double`}
       \cgalParamDefault{`0`}
     \cgalParamNEnd
@@ -154,15 +154,15 @@ make_c1_quintic_spline(Planar_domain<GeomTraits> domain, const std::vector<Value
                        const NamedParameters& np = CGAL::parameters::default_values()) {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  const Fit fit = choose_parameter(get_parameter(np, internal_np::data_fit), Fit::Adaptive);
+  const Fit fit = choose_parameter(get_parameter(np, internal_np::data_fit), Fit::ADAPTIVE);
   const int degree = choose_parameter(get_parameter(np, internal_np::local_degree), 5);
   const Degree_selection selection = choose_parameter(
-      get_parameter(np, internal_np::degree_selection), Degree_selection::Cross_validation);
+      get_parameter(np, internal_np::degree_selection), Degree_selection::CROSS_VALIDATION);
   const double lambda = choose_parameter(get_parameter(np, internal_np::smoothing), 0.0);
 
   C1_quintic_spline<GeomTraits, Value> spline(
       std::move(domain),
-      fit == Fit::Approximate ? Corner_frame::Symmetric_stars : Corner_frame::Corner_and_two_stars);
+      fit == Fit::APPROXIMATE ? Corner_frame::SYMMETRIC_STARS : Corner_frame::CORNER_AND_TWO_STARS);
   const auto gradients = get_parameter(np, internal_np::vertex_gradients);
   const auto statistics = get_parameter(np, internal_np::fit_statistics);
   const auto run = [&](const std::vector<std::array<Value, 2>>& given) {

@@ -140,7 +140,7 @@ auto thin_plate_energy_factors(int degree, const Point_2& r, const Point_2& s, c
   for the control values \f$b\f$ of \f$f\f$, exact in `FT`
   (\f$G = \sum_p w_p L_p^T M L_p\f$, `thin_plate_energy_factors()`). The energy is invariant
   under rotations and vanishes exactly on linear functions; it is the quadratic form of the
-  `Fit::Minimal_energy` fit. In floating point prefer the factors: \f$b^T G b\f$ cancels
+  `Fit::MINIMAL_ENERGY` fit. In floating point prefer the factors: \f$b^T G b\f$ cancels
   catastrophically on thin triangles.
   \pre `degree >= 2` and \f$(r,s,t)\f$ not collinear
   \returns the matrix row by row (`G[a * n + b]`, n the number of indices)
@@ -179,7 +179,7 @@ auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, co
   \brief returns the thin-plate energy \f$\int f_{xx}^2 + 2 f_{xy}^2 + f_{yy}^2\f$ of a
   functional patch over its domain triangle, exactly in `FT`, differences first
   (`thin_plate_energy_factors()`). Sum it over the patches of a spline for the spline's
-  energy: the measure of fairness the `Fit::Minimal_energy` fit minimises.
+  energy: the measure of fairness the `Fit::MINIMAL_ENERGY` fit minimises.
 */
 template <class GeomTraits>
 typename GeomTraits::FT thin_plate_energy(const Bezier_triangle<GeomTraits>& patch) {
