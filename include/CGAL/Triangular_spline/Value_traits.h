@@ -39,10 +39,15 @@ struct Value_traits {
   /// the number of coordinates
   static constexpr int dimension = 1;
   /// returns the zero value (needed for derivatives, which are linear combinations)
+  /// \returns the zero value (needed for derivatives, which are linear combinations)
   static Value zero() { return Value(0); }
   /// returns coordinate `c` of `v`
+  /// \param v the value
+  /// \returns coordinate `c` of `v`
   static const FT& coordinate(const Value& v, int) { return v; }
   /// returns the value with the given coordinates
+  /// \param c the coordinates
+  /// \returns the value with the given coordinates
   static Value from_coordinates(const std::array<FT, 1>& c) { return c[0]; }
 };
 
@@ -55,10 +60,16 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
   /// the number of coordinates
   static constexpr int dimension = 3;
   /// returns the null vector
+  /// \returns the null vector
   static Vector zero() { return Vector(NULL_VECTOR); }
   /// returns coordinate `c` (0, 1 or 2) of `v`
+  /// \param v the value
+  /// \param c the index of the coordinate
+  /// \returns coordinate `c` (0, 1 or 2) of `v`
   static FT coordinate(const Vector& v, int c) { return v[c]; }
   /// returns the vector with the given coordinates
+  /// \param c the coordinates
+  /// \returns the vector with the given coordinates
   static Vector from_coordinates(const std::array<FT, 3>& c) { return Vector(c[0], c[1], c[2]); }
 };
 
@@ -71,10 +82,16 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
   /// the number of coordinates
   static constexpr int dimension = 2;
   /// returns the null vector
+  /// \returns the null vector
   static Vector zero() { return Vector(NULL_VECTOR); }
   /// returns coordinate `c` (0 or 1) of `v`
+  /// \param v the value
+  /// \param c the index of the coordinate
+  /// \returns coordinate `c` (0 or 1) of `v`
   static FT coordinate(const Vector& v, int c) { return v[c]; }
   /// returns the vector with the given coordinates
+  /// \param c the coordinates
+  /// \returns the vector with the given coordinates
   static Vector from_coordinates(const std::array<FT, 2>& c) { return Vector(c[0], c[1]); }
 };
 
@@ -82,6 +99,9 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
   \ingroup PkgTriangularSplineCore
   \brief returns the largest absolute coordinate of `v`, converted to `double`
   (the norm used for residuals).
+  \param v the value
+  \returns the largest absolute coordinate of `v`, converted to `double` (the norm used for
+  residuals)
 */
 template <class Value>
 double max_abs_coordinate(const Value& v) {
@@ -100,6 +120,8 @@ double max_abs_coordinate(const Value& v) {
   \ingroup PkgTriangularSplineCore
   \brief returns `true` iff every coordinate of `v` is zero (an exact test for exact
   number types).
+  \param v the value
+  \returns `true` iff every coordinate of `v` is zero (an exact test for exact number types)
 */
 template <class Value>
 bool is_zero_value(const Value& v) {
@@ -138,6 +160,8 @@ double log10_of_integer(Integer z) {
   \f$10^{308}\f$ into infinity; for exact fraction types (`Gmpq`, `mpq_class`, ...) the
   magnitude is taken from the numerator and the denominator instead, so a residual of
   \f$10^{-500}\f$ reads \f$-500\f$, not \f$-\infty\f$. Accurate to about 15 digits.
+  \param x the number
+  \returns \f$\log_{10} |x|\f$ without underflow or overflow
 */
 template <class FT>
 double log10_magnitude(const FT& x) {
@@ -160,6 +184,9 @@ double log10_magnitude(const FT& x) {
   \ingroup PkgTriangularSplineCore
   \brief returns \f$\log_{10}\f$ of the largest absolute coordinate of `v`, without underflow
   (`log10_magnitude()`): \f$-\infty\f$ iff `v` is zero.
+  \param v the value
+  \returns \f$\log_{10}\f$ of the largest absolute coordinate of `v`, without underflow
+  (`log10_magnitude()`)
 */
 template <class Value>
 double max_abs_coordinate_log10(const Value& v) {
@@ -177,6 +204,10 @@ double max_abs_coordinate_log10(const Value& v) {
   \ingroup PkgTriangularSplineCore
   \brief returns `true` iff every coordinate of `v` is at most `tolerance` in absolute value,
   compared exactly in the number type (the `double` tolerance converts exactly).
+  \param v the value
+  \param tolerance the tolerance
+  \returns `true` iff every coordinate of `v` is at most `tolerance` in absolute value, compared
+  exactly in the number type (the `double` tolerance converts exactly)
 */
 template <class Value>
 bool is_within_tolerance(const Value& v, double tolerance) {
@@ -192,6 +223,8 @@ bool is_within_tolerance(const Value& v, double tolerance) {
 }
 
 /// returns `true` iff every coordinate of `v` is finite (always true for exact types).
+/// \param v the value
+/// \returns `true` iff every coordinate of `v` is finite (always true for exact types)
 template <class Value>
 bool is_finite_value(const Value& v) {
   using Traits = Value_traits<Value>;

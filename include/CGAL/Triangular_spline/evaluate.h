@@ -209,6 +209,10 @@ evaluate_at(const TriangularSplineNetwork& network,
   \ingroup PkgTriangularSplineSplines
   \brief evaluates a spline at one point: the value, or `std::nullopt` outside the domain
   (see the overload for many points).
+  \param network the spline network
+  \param locator the point locator of the network's domain
+  \param query the query point
+  \returns the value, or `std::nullopt` outside the domain
 */
 template <class TriangularSplineNetwork>
 std::optional<internal::Network_value_t<TriangularSplineNetwork>>
@@ -316,6 +320,12 @@ evaluate_jets(const TriangularSplineNetwork& network,
   \ingroup PkgTriangularSplineSplines
   \brief evaluates the value, gradient and Hessian of a spline at one point, locating
   included (see the overload for many points).
+  \param network the spline network
+  \param locator the point locator of the network's domain
+  \param query the query point
+  \param outside what to do outside the domain
+  \param order the order
+  \returns the value, gradient and Hessian, or `std::nullopt` outside the domain
 */
 template <class TriangularSplineNetwork>
 std::optional<Point_jet<internal::Network_value_t<TriangularSplineNetwork>>>

@@ -148,6 +148,9 @@ std::array<std::size_t, 2> sides_at_corner(const Mesh_blending_surface<Point_3>&
 
   Jumps at round-off level mean \f$C^d\f$ continuity in those frames.
   \throws Invalid_input if `samples_per_edge` < 1
+  \param surface the blended surface
+  \param samples_per_edge the number of sample points on each interior edge
+  \returns the measured gaps and interpolation errors
 */
 template <class Point_3>
 Blending_continuity measure_blending_continuity(const Mesh_blending_surface<Point_3>& surface,
@@ -242,6 +245,9 @@ Blending_continuity measure_blending_continuity(const Mesh_blending_surface<Poin
   building the mesh), and measures the curvature gap towards the vertices (see
   `Blending_curvature`).
   \throws Invalid_input if `resolution` < 1
+  \param surface the blended surface
+  \param resolution the number of segments per edge
+  \returns the curvature samples and the gap towards the vertices
 */
 template <class Point_3>
 Blending_curvature measure_blending_curvature(const Mesh_blending_surface<Point_3>& surface,

@@ -39,6 +39,9 @@ namespace Triangular_spline {
   \tparam VertexPointMap a readable property map from vertices to 2D or 3D CGAL points
   \throws Invalid_input if a face is not a triangle, or the projection violates the
   `Planar_domain` rules (duplicate points, zero-area or folded triangles, non-manifold)
+  \param graph the triangulated face graph
+  \param vpm the vertex point property map of `graph`
+  \returns the domain and the data values
 */
 template <class GeomTraits, class FaceGraph, class VertexPointMap>
 std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
@@ -77,6 +80,8 @@ domain_from_face_graph(const FaceGraph& graph, VertexPointMap vpm) {
 }
 
 /// returns `domain_from_face_graph(graph, get(CGAL::vertex_point, graph))`.
+/// \param graph the triangulated face graph
+/// \returns the domain and the data values
 template <class GeomTraits, class FaceGraph>
 std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
 domain_from_face_graph(const FaceGraph& graph) {

@@ -106,6 +106,8 @@ double frame_weight(const Point_2& other, const Point_2& p, const Point_2& r, co
   with the end up to rounding (sine of the angle below \f$10^{-12}\f$) are reported too,
   flagged `numerical`: the double build re-routes them instead of dividing by a weight that
   is zero but for rounding.
+  \param domain the triangulated planar domain
+  \returns the degenerate frames found
 */
 template <class GeomTraits>
 Degenerate_frame_analysis<typename Planar_domain<GeomTraits>::Index>
@@ -174,6 +176,10 @@ struct Vertex_move {
   degenerate: `C1_quintic_spline` re-routes them (`find_degenerate_frames()` lists them).
   Vertex indices are unchanged, so data attached to vertices stays valid.
   \throws Invalid_input if an interior vertex has no admissible move (not observed).
+  \param domain the triangulated planar domain
+  \param moves receives the vertex moves made
+  \returns a copy of `domain` in which the vertices with degenerate frames are moved just enough
+  that no frame is degenerate, and reports the moves (Xu §4.4.4, second fix)
 */
 template <class GeomTraits>
 Planar_domain<GeomTraits> perturb_degenerate_vertices(
