@@ -145,6 +145,7 @@ public:
     creates the patch of degree `degree` over `(r, s, t)` whose control points are the
     values `blossom(r^i s^j t^k)` of a symmetric multi-affine function; `blossom` is called
     with a `std::vector<Point_2>` of `degree` points.
+    \tparam Blossom a callable taking a `std::vector<Point_2>` and returning a `Value`
     \param degree the degree
     \param r the first corner of the domain triangle
     \param s the second corner of the domain triangle
@@ -601,6 +602,9 @@ private:
   (e.g. from `double` to `CGAL::Exact_rational`, which is exact).
   \tparam K2 the target kernel; `V2` the target value type (defaults to the value type of
   the same kind: `K2::FT` for functional patches).
+  \tparam V2 the target value type
+  \tparam K1 the source kernel
+  \tparam V1 the source value type
   \param patch the patch to convert
   \returns `patch` with its domain and control values converted to the kernel `K2` (e.g. from
   `double` to `CGAL::Exact_rational`, which is exact)

@@ -93,6 +93,7 @@ private:
   \ingroup PkgTriangularSplineCore
   \brief returns the patches of any `TriangularSplineNetwork` as a `Patch_network` (a copy:
   use it to edit the patches of a spline, or to keep them after the spline is gone).
+  \tparam Network a model of `TriangularSplineNetwork`
   \param network the spline network
   \returns the patches of any `TriangularSplineNetwork` as a `Patch_network` (a copy: use it to edit
   the patches of a spline, or to keep them after the spline is gone)

@@ -201,6 +201,7 @@ private:
   \brief returns Enneper's surface \f$F(u,v) = (u - u^3/3 + uv^2,\; v - v^3/3 + u^2v,\;
   u^2 - v^2)\f$ (Xu §2.7.1), a cubic minimal surface; over the frame \f$r=(1,0)\f$,
   \f$s=(0,1)\f$, \f$t=(0,0)\f$ its control net is Xu's Table 2.2.
+  \tparam GeomTraits a model of `Kernel`
   \returns Enneper's surface \f$F(u,v) = (u - u^3/3 + uv^2,\; v - v^3/3 + u^2v,\; u^2 - v^2)\f$ (Xu
   §2.7.1), a cubic minimal surface
 */

@@ -31,6 +31,8 @@ namespace Triangular_spline {
     \f$p\f$ is stored as the position vector \f$p - O\f$): dimensions 2 and 3.
 
   Users add a value type by specialising this template with the members below.
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
+  \tparam Enable `void`, used to select the specializations
 */
 template <class Value, class Enable = void>
 struct Value_traits {
@@ -52,6 +54,7 @@ struct Value_traits {
 };
 
 /// the value traits of `CGAL::Vector_3` (parametric patches in space).
+/// \tparam Vector a CGAL vector type
 template <class Vector>
 struct Value_traits<Vector, std::enable_if_t<std::is_same<
                                 typename Kernel_traits<Vector>::Kernel::Vector_3, Vector>::value>> {
@@ -74,6 +77,7 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
 };
 
 /// the value traits of `CGAL::Vector_2` (parametric patches in the plane).
+/// \tparam Vector a CGAL vector type
 template <class Vector>
 struct Value_traits<Vector, std::enable_if_t<std::is_same<
                                 typename Kernel_traits<Vector>::Kernel::Vector_2, Vector>::value>> {
@@ -99,6 +103,7 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
   \ingroup PkgTriangularSplineCore
   \brief returns the largest absolute coordinate of `v`, converted to `double`
   (the norm used for residuals).
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
   \param v the value
   \returns the largest absolute coordinate of `v`, converted to `double` (the norm used for
   residuals)
@@ -120,6 +125,7 @@ double max_abs_coordinate(const Value& v) {
   \ingroup PkgTriangularSplineCore
   \brief returns `true` iff every coordinate of `v` is zero (an exact test for exact
   number types).
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
   \param v the value
   \returns `true` iff every coordinate of `v` is zero (an exact test for exact number types)
 */
@@ -160,6 +166,7 @@ double log10_of_integer(Integer z) {
   \f$10^{308}\f$ into infinity; for exact fraction types (`Gmpq`, `mpq_class`, ...) the
   magnitude is taken from the numerator and the denominator instead, so a residual of
   \f$10^{-500}\f$ reads \f$-500\f$, not \f$-\infty\f$. Accurate to about 15 digits.
+  \tparam FT a number type
   \param x the number
   \returns \f$\log_{10} |x|\f$ without underflow or overflow
 */
@@ -184,6 +191,7 @@ double log10_magnitude(const FT& x) {
   \ingroup PkgTriangularSplineCore
   \brief returns \f$\log_{10}\f$ of the largest absolute coordinate of `v`, without underflow
   (`log10_magnitude()`): \f$-\infty\f$ iff `v` is zero.
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
   \param v the value
   \returns \f$\log_{10}\f$ of the largest absolute coordinate of `v`, without underflow
   (`log10_magnitude()`)
@@ -204,6 +212,7 @@ double max_abs_coordinate_log10(const Value& v) {
   \ingroup PkgTriangularSplineCore
   \brief returns `true` iff every coordinate of `v` is at most `tolerance` in absolute value,
   compared exactly in the number type (the `double` tolerance converts exactly).
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
   \param v the value
   \param tolerance the tolerance
   \returns `true` iff every coordinate of `v` is at most `tolerance` in absolute value, compared
@@ -223,6 +232,7 @@ bool is_within_tolerance(const Value& v, double tolerance) {
 }
 
 /// returns `true` iff every coordinate of `v` is finite (always true for exact types).
+/// \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
 /// \param v the value
 /// \returns `true` iff every coordinate of `v` is finite (always true for exact types)
 template <class Value>

@@ -199,6 +199,8 @@ inline void summarize_conditions(Join_report& report) {
   type). With an exact number type and `tolerance = 0` the verdict is therefore a proof;
   `Join_condition::zero` tells a proven condition from one accepted by the tolerance.
 
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param A the first patch
   \param B the second patch, of the same degree \f$m\f$ as `A`
   \param k the continuity order, \f$0 \le k \le m\f$
@@ -289,6 +291,8 @@ check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<Ge
   The conditions and residuals are those of `check_join(A, B, 1, Join_conditions::Extension)`
   but no blossom is evaluated: about \f$3m\f$ multiplications per edge, which is what makes
   exact certification of large splines affordable.
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param A the first patch
   \param B the second patch, over a triangle adjacent to that of `A`
   \param tolerance the tolerance
@@ -355,6 +359,7 @@ Join_report check_C1_join(const Bezier_triangle<GeomTraits, Value>& A,
   \tparam GeomTraits a kernel with an exact number type (e.g.
   `CGAL::Simple_cartesian<CGAL::Exact_rational>`); with `double`, use `check_join()` and
   read the residuals, or convert the patches exactly with `convert_patch()` first.
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param A the first patch
   \param B the second patch, over a triangle adjacent to that of `A`
   \param k the order of continuity
@@ -372,6 +377,8 @@ bool is_Ck_join(const Bezier_triangle<GeomTraits, Value>& A,
   \ingroup PkgTriangularSplineContinuity
   \brief returns the largest residual of the \f$C^k\f$ conditions between `A` and `B`
   (absolute, largest coordinate; zero iff they join \f$C^k\f$ up to the arithmetic).
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param A the first patch
   \param B the second patch, over a triangle adjacent to that of `A`
   \param k the order of continuity

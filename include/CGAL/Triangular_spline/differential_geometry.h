@@ -75,6 +75,7 @@ inline double dot(const std::array<double, 3>& a, const std::array<double, 3>& b
   \ingroup PkgTriangularSplineCore
   \brief returns the first and second derivatives of the surface of `patch` at `a`.
   \tparam Value a scalar (graph surface) or a 3D vector type
+  \tparam GeomTraits a model of `Kernel`
   \param patch the Bézier patch
   \param a the point of the domain plane
   \returns the first and second derivatives of the surface of `patch` at `a`
@@ -132,6 +133,8 @@ inline Surface_curvature surface_curvature(const Surface_derivatives& d) {
   \ingroup PkgTriangularSplineCore
   \brief returns the unit normal, Gaussian and mean curvature of the surface of `patch` at
   `a`, from the exact first and second derivatives (square roots are taken in `double`).
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param patch the Bézier patch
   \param a the point of the domain plane
   \returns the unit normal, Gaussian and mean curvature of the surface of `patch` at `a`, from the
@@ -147,6 +150,8 @@ Surface_curvature surface_curvature(const Bezier_triangle<GeomTraits, Value>& pa
   \ingroup PkgTriangularSplineCore
   \brief returns the unit normal of the surface of `patch` at `a` (see `surface_curvature()`),
   zero where the surface is singular.
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param patch the Bézier patch
   \param a the point of the domain plane
   \returns the unit normal of the surface of `patch` at `a` (see `surface_curvature()`), zero where

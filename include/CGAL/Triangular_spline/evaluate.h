@@ -209,6 +209,7 @@ evaluate_at(const TriangularSplineNetwork& network,
   \ingroup PkgTriangularSplineSplines
   \brief evaluates a spline at one point: the value, or `std::nullopt` outside the domain
   (see the overload for many points).
+  \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork`
   \param network the spline network
   \param locator the point locator of the network's domain
   \param query the query point
@@ -320,6 +321,7 @@ evaluate_jets(const TriangularSplineNetwork& network,
   \ingroup PkgTriangularSplineSplines
   \brief evaluates the value, gradient and Hessian of a spline at one point, locating
   included (see the overload for many points).
+  \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork`
   \param network the spline network
   \param locator the point locator of the network's domain
   \param query the query point

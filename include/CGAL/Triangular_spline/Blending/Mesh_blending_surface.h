@@ -458,6 +458,7 @@ public:
   /// @{
 
   /// returns \f$S^V(x, y)\f$, the vertex surface of `v` at frame coordinates \f$(x, y)\f$.
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param v the index of a vertex
   /// \param x the first frame coordinate
   /// \param y the second frame coordinate
@@ -476,6 +477,7 @@ public:
 
   /// returns the map \f$r^{E,V}\f$ (eq. 5.4) from the frame of edge `e` to the frame of its
   /// end `end` (0: head, 1: tail).
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param e the index of an edge
   /// \param end the end of the edge: 0 for its head, 1 for its tail
   /// \param x the first frame coordinate
@@ -492,6 +494,7 @@ public:
   }
 
   /// returns \f$S^E(x, y)\f$, the edge surface of `e` (eq. 5.6).
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param e the index of an edge
   /// \param x the first frame coordinate
   /// \param y the second frame coordinate
@@ -520,6 +523,7 @@ public:
 
   /// returns the map \f$r^{F,E}\f$ from the parameters of face `f` to the frame of the
   /// edge of its side `s`, as the variant defines it.
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param f the index of a face
   /// \param s the index of a side of face `f`
   /// \param a the first face parameter
@@ -577,6 +581,7 @@ public:
   /// returns the inheritance indicators of face `f` at parameter \f$(a, b)\f$: the
   /// barycentric coordinates of a triangle (Def. 4.2), the distances to the side lines of a
   /// polygon (Def. 7.2; exactly zero at the corners).
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param f the index of a face
   /// \param a the first face parameter
   /// \param b the second face parameter
@@ -603,6 +608,7 @@ public:
 
   /// returns \f$S^F(a, b)\f$, the surface of face `f` at parameter \f$(a, b)\f$ (eqs. 5.10,
   /// 7.5).
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param f the index of a face
   /// \param a the first face parameter
   /// \param b the second face parameter
@@ -628,6 +634,7 @@ public:
   }
 
   /// returns the sub-surface \f$S^{E}_F = S^E \circ r^{F,E}\f$ of side `s` of face `f`.
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param f the index of a face
   /// \param s the index of a side of face `f`
   /// \param a the first face parameter
@@ -662,6 +669,7 @@ public:
   }
 
   /// returns the first and second derivatives of a jet-valued point (order \f$\ge 2\f$).
+  /// \tparam J a `Taylor_jet` type
   /// \param p the point whose coordinates are jets
   /// \returns the first and second derivatives of a jet-valued point (order \f$\ge 2\f$)
   template <class J>
@@ -697,6 +705,7 @@ public:
     face property `"f:input_face"` (`std::size_t`) gives the input face of each triangle.
     `out` is cleared first.
 
+    \tparam OutPoint the point type of the output mesh
     \throws Invalid_input if `resolution` is outside [1, 1024]
     \param out the output mesh (cleared first)
     \param resolution the number of segments per edge

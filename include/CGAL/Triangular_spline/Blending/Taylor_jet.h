@@ -342,6 +342,7 @@ private:
 /*!
   \ingroup PkgTriangularSplineBlending
   \brief returns \f$F^e\f$ for an integer \f$e \ge 1\f$ (numbers or jets).
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input if \f$e < 1\f$
   \param base the number or jet \f$F\f$
   \param exponent the exponent \f$e\f$
@@ -413,6 +414,8 @@ Taylor_jet<FT, K> compose(const Taylor_jet<FT, K>& j, const Taylor_jet<FT, K>& d
   `rx`, `ry` are the jets of the two components of \f$R\f$ at \f$p\f$ (in the variables of
   \f$p\f$). Used to express a surface in the coordinate system of an adjacent element
   (Fang §5.3: \f$S^F\f$ reparameterized by \f$r^{E,F} = (r^{F,E})^{-1}\f$).
+  \tparam FT the number type of the jets
+  \tparam K the maximal order of the jets (`MaxOrder` of `Taylor_jet`)
   \throws Invalid_input if the Jacobian of \f$R\f$ at \f$p\f$ is singular
   \param rx the jet of the first component of \f$R\f$
   \param ry the jet of the second component of \f$R\f$

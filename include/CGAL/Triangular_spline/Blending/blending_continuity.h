@@ -147,6 +147,7 @@ std::array<std::size_t, 2> sides_at_corner(const Mesh_blending_surface<Point_3>&
     agree; for the basic variant only the values (order 0) and the normals do.
 
   Jumps at round-off level mean \f$C^d\f$ continuity in those frames.
+  \tparam Point_3 a CGAL 3D point type (e.g. `Kernel::Point_3`)
   \throws Invalid_input if `samples_per_edge` < 1
   \param surface the blended surface
   \param samples_per_edge the number of sample points on each interior edge
@@ -244,6 +245,7 @@ Blending_continuity measure_blending_continuity(const Mesh_blending_surface<Poin
   `Mesh_blending_surface::tessellate()` with `resolution` segments per edge (without
   building the mesh), and measures the curvature gap towards the vertices (see
   `Blending_curvature`).
+  \tparam Point_3 a CGAL 3D point type (e.g. `Kernel::Point_3`)
   \throws Invalid_input if `resolution` < 1
   \param surface the blended surface
   \param resolution the number of segments per edge

@@ -329,6 +329,7 @@ std::vector<T> blending_functions(const std::vector<T>& indicators, int order) {
   For indicators whose power is smoother than the indicator itself: a Euclidean distance
   \f$p = \sqrt{q}\f$ has \f$p^{d+1} = q^{(d+1)/2}\f$, a polynomial when \f$d\f$ is odd, whose
   jet exists where \f$p = 0\f$ (Fang, eq. 7.8).
+  \tparam T a number type or a `Taylor_jet`
   \param powers the powers of the indicators
   \returns Fang's blending functions from the powers \f$w_i = p_i^{d+1}\f$ instead of the indicators
 */
@@ -348,6 +349,7 @@ std::vector<T> blending_functions_of_powers(const std::vector<T>& powers) {
   \f$d = 1\f$ Hagen and Pottmann's (eq. 2.9). They inherit derivatives up to order \f$d\f$
   where one indicator vanishes, like Fang's, but are undefined where two vanish (the
   corners of a triangle): there all terms of the denominator vanish.
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input if \f$d < 0\f$, \f$n = 0\f$ or two or more indicators vanish
   \param indicators the values of the indicators
   \param order the order
@@ -385,6 +387,7 @@ std::vector<T> extended_nielson_functions(const std::vector<T>& indicators, int 
   \ingroup PkgTriangularSplineBlending
   \brief returns Nielson's blending functions (Fang, Def. 2.3):
   \f$f_0 = vw/(uv + vw + wu)\f$ and cyclically; undefined at the corners.
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input at a corner (two of \f$u, v, w\f$ zero)
   \param u the first indicator
   \param v the second indicator
@@ -401,6 +404,7 @@ std::array<T, 3> nielson_functions(const T& u, const T& v, const T& w) {
   \ingroup PkgTriangularSplineBlending
   \brief returns Hagen and Pottmann's blending functions (Fang, eq. 2.9):
   \f$f_0 = v^2w^2/(u^2v^2 + v^2w^2 + w^2u^2)\f$ and cyclically; undefined at the corners.
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input at a corner
   \param u the first indicator
   \param v the second indicator
@@ -422,6 +426,7 @@ std::array<T, 3> hagen_pottmann_functions(const T& u, const T& v, const T& w) {
   Where no indicator vanishes they are computed from the reciprocals, an independent
   formula; they equal `extended_nielson_functions()` (multiply numerator and denominator
   by \f$\prod w\f$), which the tests check exactly.
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input if \f$d < 0\f$, \f$n = 0\f$ or two or more indicators vanish
   \param indicators the values of the indicators
   \param order the order
@@ -465,6 +470,7 @@ struct Fang_blending_functions {
   /// \returns the name of the policy, `"fang"`
   static const char* name() { return "fang"; }
   /// returns the blending functions of order `order` of `indicators` (`blending_functions()`).
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param indicators the values of the indicators
   /// \param order the order
   /// \returns the blending functions of order `order` of `indicators` (`blending_functions()`)
@@ -474,6 +480,7 @@ struct Fang_blending_functions {
   }
   /// returns the blending functions of indicators given as powers
   /// (`blending_functions_of_powers()`).
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param powers the powers of the indicators
   /// \returns the blending functions of indicators given as powers
   /// (`blending_functions_of_powers()`)
@@ -493,6 +500,7 @@ struct Extended_nielson_blending_functions {
   /// \returns the name of the policy, `"extended-nielson"`
   static const char* name() { return "extended-nielson"; }
   /// returns the extended Nielson functions of order `order` of `indicators`.
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param indicators the values of the indicators
   /// \param order the order
   /// \returns the extended Nielson functions of order `order` of `indicators`
@@ -511,6 +519,7 @@ struct Shepard_blending_functions {
   /// \returns the name of the policy, `"shepard"`
   static const char* name() { return "shepard"; }
   /// returns Shepard's functions of order `order` of `indicators`.
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param indicators the values of the indicators
   /// \param order the order
   /// \returns Shepard's functions of order `order` of `indicators`

@@ -115,6 +115,7 @@ public:
   int order() const { return m_order; }
 
   /// returns the indicators \f$(u, v, 1 - u - v)\f$ (Def. 4.2).
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param u the first parameter \f$u\f$
   /// \param v the second parameter \f$v\f$
   /// \returns the indicators
@@ -125,6 +126,7 @@ public:
   }
 
   /// returns the blending functions \f$f_0, f_1, f_2\f$ at \f$(u, v)\f$ (Def. 4.3).
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param u the first parameter \f$u\f$
   /// \param v the second parameter \f$v\f$
   /// \returns the blending functions \f$f_0, f_1, f_2\f$ at \f$(u, v)\f$ (Def. 4.3)
@@ -134,6 +136,10 @@ public:
   }
 
   /// returns \f$\sum_i f_i(u,v)\, S_i(u,v)\f$ (Def. 4.6).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \tparam S0 a callable `s(u, v)`
+  /// \tparam S1 a callable `s(u, v)`
+  /// \tparam S2 a callable `s(u, v)`
   /// \param u the first parameter \f$u\f$
   /// \param v the second parameter \f$v\f$
   /// \param s0 the callable of the first sub-surface \f$S_0\f$
@@ -162,6 +168,8 @@ private:
   With \f$n = 2\f$, Def. 3.4 reduces to
   \f$f_0 = (1-y)^{d+1} / (y^{d+1} + (1-y)^{d+1})\f$, \f$f_1 = 1 - f_0\f$.
   Sub-surfaces are callables as in `Triangular_blending_scheme`.
+  \tparam FT a number type
+  \tparam BlendingFunctions a blending-function policy, e.g. `Fang_blending_functions`
 */
 template <class FT, class BlendingFunctions = Fang_blending_functions>
 class Binary_blending_scheme {
@@ -185,6 +193,7 @@ public:
   int order() const { return m_order; }
 
   /// returns the indicators \f$(y, 1 - y)\f$ (eq. 5.7); `x` is not used.
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param y the \f$y\f$ coordinate
   /// \returns the indicators
   template <class T>
@@ -194,6 +203,7 @@ public:
   }
 
   /// returns \f$f_0, f_1\f$ at \f$(x, y)\f$.
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param x the \f$x\f$ coordinate
   /// \param y the \f$y\f$ coordinate
   /// \returns \f$f_0, f_1\f$ at \f$(x, y)\f$
@@ -203,6 +213,9 @@ public:
   }
 
   /// returns \f$f_0 S_0 + f_1 S_1\f$ at \f$(x, y)\f$ (eq. 5.6).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \tparam S0 a callable `s(u, v)`
+  /// \tparam S1 a callable `s(u, v)`
   /// \param x the \f$x\f$ coordinate
   /// \param y the \f$y\f$ coordinate
   /// \param s0 the callable of the first sub-surface \f$S_0\f$
@@ -309,6 +322,7 @@ public:
 
   /// returns the indicators \f$m_0, \dots, m_{n-1}\f$ at \f$(x, y)\f$: the signed distances to
   /// the side lines, positive inside.
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param x the \f$x\f$ coordinate
   /// \param y the \f$y\f$ coordinate
   /// \returns the indicators
@@ -324,6 +338,7 @@ public:
   }
 
   /// returns the blending functions \f$f_i^{n,d,m}\f$ at \f$(x, y)\f$.
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param x the \f$x\f$ coordinate
   /// \param y the \f$y\f$ coordinate
   /// \returns the blending functions \f$f_i^{n,d,m}\f$ at \f$(x, y)\f$
@@ -334,6 +349,8 @@ public:
 
   /// returns \f$\sum_i f_i S_i\f$ at \f$(x, y)\f$ (eq. 7.1); `sub_surfaces` is a container of
   /// \f$n\f$ callables `s(x, y)` of one type (e.g. `std::function`).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \tparam Container a container of callables `s(x, y)`
   /// \param x the \f$x\f$ coordinate
   /// \param y the \f$y\f$ coordinate
   /// \param sub_surfaces the \f$n\f$ sub-surfaces, callables `s(x, y)`

@@ -356,6 +356,7 @@ inline std::vector<std::string> blending_test_mesh_names() {
   \ingroup PkgTriangularSplineBlending
   \brief converts mesh arrays to a `CGAL::Surface_mesh` with the normals (if any) in the
   vertex property map `"v:normal"`.
+  \tparam Point_3 a CGAL 3D point type (e.g. `Kernel::Point_3`)
   \throws Invalid_input if a face refers to a missing vertex or `Surface_mesh` rejects a
   face (non-manifold or inconsistently oriented input)
   \param data the vertices, faces and optional normals of the mesh
@@ -395,6 +396,7 @@ CGAL::Surface_mesh<Point_3> to_surface_mesh(const Blending_mesh_data& data) {
   \ingroup PkgTriangularSplineBlending
   \brief returns the test mesh `name` (see `blending_test_mesh_data()`) as a
   `CGAL::Surface_mesh` with its normals in `"v:normal"` (none for `perturbed`).
+  \tparam Point_3 a CGAL 3D point type (e.g. `Kernel::Point_3`)
   \param name the name of the test mesh
   \param seed the seed of the random generator
   \returns the test mesh `name` (see `blending_test_mesh_data()`) as a `CGAL::Surface_mesh` with its

@@ -61,6 +61,7 @@ public:
   }
 
   /// returns \f$P(x, y)\f$ (nested Horner scheme).
+  /// \tparam T a number type or a `Taylor_jet`
   /// \param x the \f$x\f$ coordinate
   /// \param y the \f$y\f$ coordinate
   /// \returns the value \f$P(x, y)\f$

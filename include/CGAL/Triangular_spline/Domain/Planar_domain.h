@@ -576,6 +576,8 @@ private:
   \ingroup PkgTriangularSplineSplines
   \brief returns `domain` with its points converted to the kernel `K2` (exact when `K2` is
   exact: the double coordinates are represented exactly).
+  \tparam K2 the target kernel
+  \tparam K1 the source kernel
   \param domain the domain to convert
   \returns `domain` with its points converted to the kernel `K2` (exact when `K2` is exact: the
   double coordinates are represented exactly)

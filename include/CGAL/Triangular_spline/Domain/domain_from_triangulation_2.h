@@ -48,6 +48,9 @@ struct Lexicographic_hilbert_traits {
   handle of each domain vertex.
   \tparam Triangulation a `CGAL::Triangulation_2` (Delaunay, constrained, ...) whose
   points are `GeomTraits::Point_2`
+  \tparam GeomTraits a model of `Kernel`
+  \tparam InDomain a predicate on the triangulation's face handles
+  \tparam VertexHandles a `std::vector` of the triangulation's vertex handles
   \param triangulation the CGAL 2D triangulation
   \param in_domain the predicate on face handles selecting the faces of the domain
   \param vertex_map receives the triangulation vertex handle of each domain vertex

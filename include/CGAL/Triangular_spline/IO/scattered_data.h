@@ -134,6 +134,7 @@ Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& sour
   \brief reads query points, `x y` per line (a third column, as in `.xyz` files, is
   ignored; `#` starts a comment; blank lines are skipped), parsed as `GeomTraits::FT`
   (exactly for exact number types).
+  \tparam GeomTraits a model of `Kernel`
   \throws Invalid_input naming `name` and the line for a malformed line or number
   \param in the input stream
   \param name the name used in error messages

@@ -53,6 +53,8 @@ constexpr int mann_derivative_order(int degree) {
 
   This is the form in which `mann_interpolant()` takes vertex data: centred polynomials
   keep the blossoms well conditioned in `double` far from the origin.
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param f the index of a face
   \param center the point of expansion \f$c\f$
   \returns the Taylor polynomial of `f` at `center`, in the local variables \f$(u, v) = (x - c_x, y
@@ -84,6 +86,8 @@ taylor_polynomial(const Polynomial_surface<GeomTraits, Value>& f,
   \f$u^p v^q\f$ is `derivative(p, q)` \f$/ (p!\, q!)\f$.
   \tparam Derivative a callable `derivative(p, q)` returning
   \f$\partial^{p+q} f / \partial x^p \partial y^q\f$ at the point, as a `Value`
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param order the order
   \param derivative the callable `derivative(p, q)` returning the partial derivatives
   \returns the Taylor polynomial of order `order` built from partial derivatives, in the local
@@ -222,6 +226,8 @@ mann_c0_network(const Planar_domain<GeomTraits>& domain,
   `f` in `domain().face(f)` order, all of degree `degree()`) and what the continuity
   adjustment moved.
   \cgalModels `TriangularSplineNetwork`
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
 */
 template <class GeomTraits, class Value = typename GeomTraits::FT>
 struct Mann_interpolant : Patch_network<GeomTraits, Value> {
@@ -250,6 +256,8 @@ struct Mann_interpolant : Patch_network<GeomTraits, Value> {
   leaves unchanged. For the default quintic, \f$k = 1\f$: a \f$C^1\f$ interpolant with
   quintic precision, built from derivatives up to order 3 at the vertices.
 
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param domain the domain triangulation
   \param jets the vertex data, as for `mann_c0_network()`
   \param degree the patch degree \f$n\f$

@@ -106,6 +106,8 @@ enum class Fit {
   plane through \f$(v, z_v)\f$ closest to the neighbours' data (exact arithmetic with an
   exact number type; a vertex whose neighbours are collinear with it has no gradient and
   gets the zero vector).
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param domain the triangulated planar domain
   \param values the data values, one per domain vertex
   \returns the least-squares gradient at every vertex of the data `values`
@@ -445,6 +447,8 @@ struct Fit_statistics {
   star point \f$f(v^4 w)\f$ becomes \f$z_v + \nabla z_v \cdot (w - v)/5\f$, so the spline's
   gradient at every vertex is the given one (exactly with an exact number type); the other
   free points follow the fit.
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \throws Invalid_input if `values` or `given_gradients` has the wrong size or a non-finite
   value, if `smoothing` is negative or not finite or given to another fit than
   `Minimal_energy` or with gradients, if gradients are given to `Approximate`, or if a fit

@@ -165,6 +165,7 @@ public:
     points with multiplicities in [`begin`, `end`) (pairs of a point pointer and a
     multiplicity, summing to `n`): for a quintic spline with `n` = 5, the control value that
     \f$p_v\f$ gives the control point with that polar label.
+    \tparam Iterator an input iterator over pairs of a `const Point_2*` and an `int`
     \param v the index of a vertex
     \param begin the first (point pointer, multiplicity) pair
     \param end past the last pair
