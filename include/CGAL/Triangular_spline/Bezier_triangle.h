@@ -354,7 +354,7 @@ public:
     one evaluation plus a constant, and every result is a rational function of the control
     points, `w` and the vertices: exact for an exact `FT`.
     \param w the barycentric coordinates of the point
-    \param order the order
+    \param order the highest derivative order computed (0, 1 or 2)
     \returns the value, gradient and Hessian of \f$F\f$ at the point with barycentric coordinates
     `w`, with respect to the domain coordinates \f$(x, y)\f$
   */
@@ -417,7 +417,7 @@ public:
 
   /// returns the value, gradient and Hessian of \f$F\f$ at `a` (see `jet_barycentric()`).
   /// \param a the point of the domain plane
-  /// \param order the order
+  /// \param order the highest derivative order computed (0, 1 or 2)
   /// \returns the value, gradient and Hessian of \f$F\f$ at `a` (see `jet_barycentric()`)
   Point_jet<Value> jet(const Point_2& a, int order = 2) const {
     return jet_barycentric(barycentric_coordinates(a), order);

@@ -214,7 +214,7 @@ double max_abs_coordinate_log10(const Value& v) {
   compared exactly in the number type (the `double` tolerance converts exactly).
   \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
   \param v the value
-  \param tolerance the tolerance
+  \param tolerance the bound on the absolute value of each coordinate
   \returns `true` iff every coordinate of `v` is at most `tolerance` in absolute value, compared
   exactly in the number type (the `double` tolerance converts exactly)
 */

@@ -295,7 +295,7 @@ check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<Ge
   \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param A the first patch
   \param B the second patch, over a triangle adjacent to that of `A`
-  \param tolerance the tolerance
+  \param tolerance absolute tolerance on each coordinate of a difference (0: exact zero)
   \returns the join report
 */
 template <class GeomTraits, class Value>

@@ -325,8 +325,8 @@ evaluate_jets(const TriangularSplineNetwork& network,
   \param network the spline network
   \param locator the point locator of the network's domain
   \param query the query point
-  \param outside what to do outside the domain
-  \param order the order
+  \param outside what to return outside the domain
+  \param order the highest derivative order wanted (0, 1 or 2); higher derivatives are zero
   \returns the value, gradient and Hessian, or `std::nullopt` outside the domain
 */
 template <class TriangularSplineNetwork>

@@ -58,7 +58,7 @@ public:
 
   /// creates the constant `c` truncated at order `order`.
   /// \param c the constant value
-  /// \param order the order
+  /// \param order the order of the jet
   Taylor_jet(const FT& c, int order) : m_order(checked(order)) {
     m_c.fill(FT(0));
     m_c[0] = c;
@@ -137,7 +137,7 @@ public:
   }
 
   /// returns this jet truncated to order `order` (at most the current order).
-  /// \param order the order
+  /// \param order the order of the result
   /// \returns this jet truncated to order `order` (at most the current order)
   Taylor_jet truncated(int order) const {
     Taylor_jet r(*this);
@@ -153,7 +153,7 @@ public:
   /// \returns the linear index of \f$c_{a,b}\f$
   static constexpr int index(int a, int b) { return (a + b) * (a + b + 1) / 2 + b; }
   /// returns the number of coefficients of a jet of order `order`.
-  /// \param order the order
+  /// \param order the order of the jet
   /// \returns the number of coefficients of a jet of order `order`
   static constexpr int size(int order) { return (order + 1) * (order + 2) / 2; }
 

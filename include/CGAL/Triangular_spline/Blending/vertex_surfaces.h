@@ -272,7 +272,7 @@ least_interpolant(const std::vector<Interpolation_condition>& conditions,
   dependent for this degree
   \param exact the conditions to meet exactly
   \param fitted the conditions to meet in the least-squares sense
-  \param degree the degree
+  \param degree the largest degree of the polynomial
   \returns the fitted polynomial
 */
 inline Bivariate_polynomial

@@ -36,7 +36,7 @@ namespace Triangular_spline {
   least \f$\lceil n/3\rceil\f$; the blossom of a Taylor polynomial centred at that vertex
   with that many arguments at the vertex depends on derivatives up to order
   \f$n - \lceil n/3\rceil = \lfloor 2n/3 \rfloor\f$ only.
-  \param degree the degree
+  \param degree the degree \f$n\f$ of the interpolant
   \returns \f$\lfloor 2n/3 \rfloor\f$, the highest order of vertex derivatives that Mann's
   degree-\f$n\f$ interpolant uses (Mann §3)
 */
@@ -88,7 +88,7 @@ taylor_polynomial(const Polynomial_surface<GeomTraits, Value>& f,
   \f$\partial^{p+q} f / \partial x^p \partial y^q\f$ at the point, as a `Value`
   \tparam GeomTraits a model of `Kernel`
   \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
-  \param order the order
+  \param order the order of the Taylor polynomial
   \param derivative the callable `derivative(p, q)` returning the partial derivatives
   \returns the Taylor polynomial of order `order` built from partial derivatives, in the local
   variables centred at the point where they were taken
