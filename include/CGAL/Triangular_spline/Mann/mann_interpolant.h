@@ -57,8 +57,7 @@ constexpr int mann_derivative_order(int degree) {
   \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param f the index of a face
   \param center the point of expansion \f$c\f$
-  \returns the Taylor polynomial of `f` at `center`, in the local variables \f$(u, v) = (x - c_x, y
-  - c_y)\f$
+  \returns the Taylor polynomial of `f` at `center`, in the local variables \f$(u, v)\f$
 */
 template <class GeomTraits, class Value>
 Polynomial_surface<GeomTraits, Value>
