@@ -31,7 +31,7 @@ namespace Triangular_spline {
 */
 enum class Join_conditions {
   /// for each order \f$l \le k\f$ and \f$i+j = m-l\f$: \f$f_B(q^l r^i s^j) = f_A(q^l r^i s^j)\f$,
-  /// i.e. the control points of B next to the edge equal those of A's polynomial extended
+  /// i.e.\ the control points of B next to the edge equal those of A's polynomial extended
   /// over B's triangle. Order 0 is Xu's (3.4), order 1 is (3.5). \f$\sum_l (m-l+1)\f$
   /// conditions, the minimal number.
   Extension,

@@ -33,15 +33,15 @@ namespace Triangular_spline {
   \brief the edge-to-face reparameterization of Fang's mesh interpolation algorithm.
 */
 enum class Blending_variant {
-  /// the basic algorithm (ch. 5, eq. 5.8; multi-sided eq. 7.2): one affine (similarity)
+  /// the basic algorithm (ch.\ 5, eq.\ 5.8; multi-sided eq.\ 7.2): one affine (similarity)
   /// map per face side; \f$C^d\f$ across edges, only normals (\f$d \ge 1\f$) continuous at
   /// the vertices
   BASIC,
-  /// improved with vertex continuity (§6.1, eqs. 6.8–6.11; multi-sided §7.3, eqs.
-  /// 7.6–7.8): two affine maps blended so that each face is \f$C^d\f$ at its corners in the
+  /// improved with vertex continuity (§6.1, eqs.\ 6.8–6.11; multi-sided §7.3, eqs.\ 7.6–7.8):
+  /// two affine maps blended so that each face is \f$C^d\f$ at its corners in the
   /// vertex frames
   VERTEX_CONTINUITY,
-  /// improved with open-set continuity (§6.2, eqs. 6.18–6.21): the affine maps are used
+  /// improved with open-set continuity (§6.2, eqs.\ 6.18–6.21): the affine maps are used
   /// unblended near the corners, so the surface is \f$C^d\f$ in the vertex frame on a
   /// neighbourhood of every vertex. For multi-sided faces (not in the thesis) the
   /// neighbourhoods are the discs of radius 1/3 of the side around its ends, and the blend
@@ -475,7 +475,7 @@ public:
     return p;
   }
 
-  /// returns the map \f$r^{E,V}\f$ (eq. 5.4) from the frame of edge `e` to the frame of its
+  /// returns the map \f$r^{E,V}\f$ (eq.\ 5.4) from the frame of edge `e` to the frame of its
   /// end `end` (0: head, 1: tail).
   /// \tparam T a number type or a `Taylor_jet`
   /// \param e the index of an edge
@@ -493,7 +493,7 @@ public:
     return {{X, Y}};
   }
 
-  /// returns \f$S^E(x, y)\f$, the edge surface of `e` (eq. 5.6).
+  /// returns \f$S^E(x, y)\f$, the edge surface of `e` (eq.\ 5.6).
   /// \tparam T a number type or a `Taylor_jet`
   /// \param e the index of an edge
   /// \param x the first frame coordinate
@@ -579,8 +579,8 @@ public:
   }
 
   /// returns the inheritance indicators of face `f` at parameter \f$(a, b)\f$: the
-  /// barycentric coordinates of a triangle (Def. 4.2), the distances to the side lines of a
-  /// polygon (Def. 7.2; exactly zero at the corners).
+  /// barycentric coordinates of a triangle (Def.\ 4.2), the distances to the side lines of a
+  /// polygon (Def.\ 7.2; exactly zero at the corners).
   /// \tparam T a number type or a `Taylor_jet`
   /// \param f the index of a face
   /// \param a the first face parameter
@@ -606,7 +606,7 @@ public:
     return m;
   }
 
-  /// returns \f$S^F(a, b)\f$, the surface of face `f` at parameter \f$(a, b)\f$ (eqs. 5.10,
+  /// returns \f$S^F(a, b)\f$, the surface of face `f` at parameter \f$(a, b)\f$ (eqs.\ 5.10,
   /// 7.5).
   /// \tparam T a number type or a `Taylor_jet`
   /// \param f the index of a face

@@ -32,12 +32,12 @@ struct Blending_continuity {
   int order = 0;          ///< the blending order \f$d\f$
   int measured_order = 0; ///< derivatives measured up to this order: \f$\min(d, 6)\f$
   /// [k]: across interior edges, in the edge frame \f$\mathcal{F}^E\f$: the two faces'
-  /// surfaces reparameterized by \f$r^{E,F} = (r^{F,E})^{-1}\f$ (Thm. 5.1)
+  /// surfaces reparameterized by \f$r^{E,F} = (r^{F,E})^{-1}\f$ (Thm.\ 5.1)
   std::vector<double> max_edge_jump;
   /// [k]: at the vertices, in the vertex frame \f$\mathcal{F}^V\f$: each incident face's
   /// surface composed with \f$A_{F,V}^{-1}\f$ (`face_to_vertex_frame()`) against the vertex
   /// surface \f$S^V\f$ — the face's corner jet (two-zero limit) and its one-sided limits
-  /// along both sides (the sub-surfaces there) all count (Thms. 6.1, 6.2)
+  /// along both sides (the sub-surfaces there) all count (Thms.\ 6.1, 6.2)
   std::vector<double> max_vertex_jump;
   /// [k]: each face's surface on an edge against the edge surface \f$S^E\f$ (inheritance)
   std::vector<double> max_edge_inheritance_error;

@@ -114,7 +114,7 @@ public:
   /// \returns the blending order \f$d\f$
   int order() const { return m_order; }
 
-  /// returns the indicators \f$(u, v, 1 - u - v)\f$ (Def. 4.2).
+  /// returns the indicators \f$(u, v, 1 - u - v)\f$ (Def.\ 4.2).
   /// \tparam T a number type or a `Taylor_jet`
   /// \param u the first parameter \f$u\f$
   /// \param v the second parameter \f$v\f$
@@ -125,7 +125,7 @@ public:
     return {u, v, w};
   }
 
-  /// returns the blending functions \f$f_0, f_1, f_2\f$ at \f$(u, v)\f$ (Def. 4.3).
+  /// returns the blending functions \f$f_0, f_1, f_2\f$ at \f$(u, v)\f$ (Def.\ 4.3).
   /// \tparam T a number type or a `Taylor_jet`
   /// \param u the first parameter \f$u\f$
   /// \param v the second parameter \f$v\f$
@@ -135,7 +135,7 @@ public:
     return m_functions(indicators(u, v), m_order);
   }
 
-  /// returns \f$\sum_i f_i(u,v)\, S_i(u,v)\f$ (Def. 4.6).
+  /// returns \f$\sum_i f_i(u,v)\, S_i(u,v)\f$ (Def.\ 4.6).
   /// \tparam T a number type or a `Taylor_jet`
   /// \tparam S0 a callable `s(u, v)`
   /// \tparam S1 a callable `s(u, v)`
@@ -192,7 +192,7 @@ public:
   /// \returns the blending order \f$d\f$
   int order() const { return m_order; }
 
-  /// returns the indicators \f$(y, 1 - y)\f$ (eq. 5.7); `x` is not used.
+  /// returns the indicators \f$(y, 1 - y)\f$ (eq.\ 5.7); `x` is not used.
   /// \tparam T a number type or a `Taylor_jet`
   /// \param y the \f$y\f$ coordinate
   /// \returns the indicators
@@ -212,7 +212,7 @@ public:
     return m_functions(indicators(x, y), m_order);
   }
 
-  /// returns \f$f_0 S_0 + f_1 S_1\f$ at \f$(x, y)\f$ (eq. 5.6).
+  /// returns \f$f_0 S_0 + f_1 S_1\f$ at \f$(x, y)\f$ (eq.\ 5.6).
   /// \tparam T a number type or a `Taylor_jet`
   /// \tparam S0 a callable `s(u, v)`
   /// \tparam S1 a callable `s(u, v)`
@@ -238,11 +238,11 @@ private:
   \brief how `Multi_sided_blending_scheme` measures the distance to a side.
 */
 enum class Side_distance {
-  /// the Euclidean distance to the side's line (Fang, Def. 7.2); needs a square root of
+  /// the Euclidean distance to the side's line (Fang, Def.\ 7.2); needs a square root of
   /// each side length, taken with `CGAL::approximate_sqrt()` (exact for `double`)
   EUCLIDEAN,
   /// the Euclidean distance times the side length (a 2x2 determinant): rational, so exact
-  /// with an exact number type; same zero sets, hence the same inheritance (Thm. 7.1), but
+  /// with an exact number type; same zero sets, hence the same inheritance (Thm.\ 7.1), but
   /// different blending functions when the sides have different lengths
   SCALED
 };
@@ -347,8 +347,8 @@ public:
     return m_functions(indicators(x, y), m_order);
   }
 
-  /// returns \f$\sum_i f_i S_i\f$ at \f$(x, y)\f$ (eq. 7.1); `sub_surfaces` is a container of
-  /// \f$n\f$ callables `s(x, y)` of one type (e.g. `std::function`).
+  /// returns \f$\sum_i f_i S_i\f$ at \f$(x, y)\f$ (eq.\ 7.1); `sub_surfaces` is a container of
+  /// \f$n\f$ callables `s(x, y)` of one type (e.g.\ `std::function`).
   /// \tparam T a number type or a `Taylor_jet`
   /// \tparam Container a container of callables `s(x, y)`
   /// \param x the \f$x\f$ coordinate

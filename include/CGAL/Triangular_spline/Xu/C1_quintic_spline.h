@@ -118,7 +118,7 @@ auto barycentric_weights(const Point_2& x, const Point_2& a, const Point_2& b, c
   are prescribed.
 */
 enum class Corner_frame {
-  /// three star points spread evenly around the vertex (Xu Fig. 4.1): the corner point
+  /// three star points spread evenly around the vertex (Xu Fig.\ 4.1): the corner point
   /// itself is propagated, so the spline approximates the vertex data
   Symmetric_stars,
   /// the corner point and the two star points whose directions are closest to orthogonal:
