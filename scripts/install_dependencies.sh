@@ -7,7 +7,7 @@ set -euo pipefail
 
 packages=(cmake g++ make libcgal-dev libeigen3-dev libgtest-dev libbenchmark-dev libpng-dev
           libcli11-dev nlohmann-json3-dev
-          doxygen clang-format)
+          doxygen libjs-mathjax clang-format)
 if [[ ${1:-} == --fuzz ]]; then
   packages+=(clang libclang-rt-14-dev)
 elif [[ $# -gt 0 ]]; then

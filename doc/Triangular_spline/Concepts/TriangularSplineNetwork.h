@@ -24,13 +24,17 @@ public:
   typedef unspecified_type Index;
 
   /// returns the triangulated domain.
+  /// \returns the triangulated domain
   const CGAL::Triangular_spline::Planar_domain<Geom_traits>& domain() const;
 
   /// returns the patch of face `f`: a `Bezier_triangle<Geom_traits, Value>` (by value or by
   /// const reference), `Value` being `Geom_traits::FT` (functional) or a vector type
   /// (parametric); the same `Value` for every face.
+  /// \param f the index of a face
+  /// \returns the patch of face `f`
   CGAL::Triangular_spline::Bezier_triangle<Geom_traits, Value> patch(Index f) const;
 
   /// returns the largest degree of the patches.
+  /// \returns the largest degree of the patches
   int degree() const;
 };

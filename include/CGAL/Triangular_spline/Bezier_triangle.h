@@ -119,6 +119,12 @@ public:
     \throws Invalid_input if the triangle is degenerate (decided with the kernel's exact
     collinearity predicate), a coordinate or control value is not finite, `degree < 0`, or
     `net` does not hold \f$(m+1)(m+2)/2\f$ values.
+    \param degree the degree
+    \param r the first corner of the domain triangle
+    \param s the second corner of the domain triangle
+    \param t the third corner of the domain triangle
+    \param net the control values, \f$(m+1)(m+2)/2\f$ of them for degree \f$m\f$
+    \param traits the geometric traits
   */
   Bezier_triangle(int degree, const Point_2& r, const Point_2& s, const Point_2& t,
                   std::vector<Value> net, const Geom_traits& traits = Geom_traits())
@@ -139,6 +145,14 @@ public:
     creates the patch of degree `degree` over `(r, s, t)` whose control points are the
     values `blossom(r^i s^j t^k)` of a symmetric multi-affine function; `blossom` is called
     with a `std::vector<Point_2>` of `degree` points.
+    \tparam Blossom a callable taking a `std::vector<Point_2>` and returning a `Value`
+    \param degree the degree
+    \param r the first corner of the domain triangle
+    \param s the second corner of the domain triangle
+    \param t the third corner of the domain triangle
+    \param blossom the symmetric multi-affine function, called with a `std::vector<Point_2>`
+    \param traits the geometric traits
+    \returns the patch whose control points are the blossom values
   */
   template <class Blossom>
   static Bezier_triangle from_blossom(int degree, const Point_2& r, const Point_2& s,
@@ -165,23 +179,36 @@ public:
   /// @{
 
   /// returns the degree `m`.
+  /// \returns the degree `m`
   int degree() const { return m_degree; }
   /// returns domain vertex `v` (0: r, 1: s, 2: t).
+  /// \param v the index of a vertex
+  /// \returns domain vertex `v` (0: r, 1: s, 2: t)
   const Point_2& vertex(int v) const { return m_vertices[static_cast<std::size_t>(v)]; }
   /// returns the three domain vertices.
+  /// \returns the three domain vertices
   const std::array<Point_2, 3>& vertices() const { return m_vertices; }
   /// returns the control net in Xu's Table 2.3 order.
+  /// \returns the control net in Xu's Table 2.3 order
   const std::vector<Value>& control_points() const { return m_net; }
   /// returns \f$b_{i,j,k}\f$.
+  /// \param index the multi-index of a control point
+  /// \returns \f$b_{i,j,k}\f$
   const Value& control_point(const Multi_index& index) const {
     check_index(index);
     return m_net[linear_index(index)];
   }
   /// returns \f$b_{i,j,k}\f$.
+  /// \param i the first index of \f$b_{i,j,k}\f$
+  /// \param j the second index of \f$b_{i,j,k}\f$
+  /// \param k the third index of \f$b_{i,j,k}\f$, with \f$i + j + k\f$ = `degree()`
+  /// \returns \f$b_{i,j,k}\f$
   const Value& control_point(int i, int j, int k) const {
     return control_point(Multi_index{i, j, k});
   }
   /// replaces \f$b_{i,j,k}\f$ by `value`.
+  /// \param index the multi-index of a control point
+  /// \param value the new control value
   void set_control_point(const Multi_index& index, const Value& value) {
     check_index(index);
     if (!is_finite_value(value))
@@ -189,6 +216,7 @@ public:
     m_net[linear_index(index)] = value;
   }
   /// returns the geometric traits.
+  /// \returns the geometric traits
   const Geom_traits& geom_traits() const { return m_traits; }
   /// @}
 
@@ -197,6 +225,9 @@ public:
 
   /// returns the barycentric coordinates \f$(\lambda,\mu,\nu)\f$ of `a` with respect to
   /// \f$(r,s,t)\f$, so that \f$a = \lambda r + \mu s + \nu t\f$ (ratios of 2x2 determinants).
+  /// \param a the point of the domain plane
+  /// \returns the barycentric coordinates \f$(\lambda,\mu,\nu)\f$ of `a` with respect to
+  /// \f$(r,s,t)\f$, so that \f$a = \lambda r + \mu s + \nu t\f$ (ratios of 2x2 determinants)
   Weights barycentric_coordinates(const Point_2& a) const {
     const FT mu = determinant(a - m_vertices[0], m_vertices[2] - m_vertices[0]) * m_inverse_area2;
     const FT nu = determinant(m_vertices[1] - m_vertices[0], a - m_vertices[0]) * m_inverse_area2;
@@ -204,6 +235,8 @@ public:
   }
 
   /// returns the barycentric coordinates of the vector `u` (they sum to zero).
+  /// \param u the vector
+  /// \returns the barycentric coordinates of the vector `u` (they sum to zero)
   Weights barycentric_direction(const Vector_2& u) const {
     const FT mu = determinant(u, m_vertices[2] - m_vertices[0]) * m_inverse_area2;
     const FT nu = determinant(m_vertices[1] - m_vertices[0], u) * m_inverse_area2;
@@ -219,6 +252,9 @@ public:
     barycentric weights; weights summing to 0 stand for vectors (the linear extension of
     the blossom, used for derivatives). De Casteljau's algorithm with distinct arguments.
     \pre `arguments.size() == degree()`
+    \param arguments the blossom arguments, one per degree
+    \returns the blossom (polar form) \f$f(a_1,\dots,a_m)\f$, each argument given by its barycentric
+    weights
   */
   Value blossom_barycentric(const std::vector<Weights>& arguments) const {
     if (arguments.size() != static_cast<std::size_t>(m_degree))
@@ -232,6 +268,8 @@ public:
   }
 
   /// returns the blossom \f$f(a_1,\dots,a_m)\f$ at the points `arguments`.
+  /// \param arguments the blossom arguments, one per degree
+  /// \returns the blossom \f$f(a_1,\dots,a_m)\f$ at the points `arguments`
   Value blossom(const std::vector<Point_2>& arguments) const {
     std::vector<Weights> weights;
     weights.reserve(arguments.size());
@@ -241,11 +279,15 @@ public:
   }
 
   /// returns \f$F(a) = f(a,\dots,a)\f$ by de Casteljau's algorithm.
+  /// \param a the point of the domain plane
+  /// \returns \f$F(a) = f(a,\dots,a)\f$ by de Casteljau's algorithm
   Value evaluate(const Point_2& a) const {
     return evaluate_barycentric(barycentric_coordinates(a));
   }
 
   /// returns \f$F(a)\f$ for `a` given by its barycentric coordinates.
+  /// \param w the barycentric coordinates of the point
+  /// \returns \f$F(a)\f$ for `a` given by its barycentric coordinates
   Value evaluate_barycentric(const Weights& w) const {
     internal::Scratch_net<Value> net(m_net.begin(), m_net.end());
     for (int l = 0; l < m_degree; ++l)
@@ -256,6 +298,10 @@ public:
   /// returns \f$F(a)\f$ evaluated as the Bernstein sum
   /// \f$\sum \frac{m!}{i!j!k!}\lambda^i\mu^j\nu^k b_{i,j,k}\f$ (an independent formula,
   /// used to cross-check de Casteljau and in benchmarks).
+  /// \param a the point of the domain plane
+  /// \returns \f$F(a)\f$ evaluated as the Bernstein sum \f$\sum
+  /// \frac{m!}{i!j!k!}\lambda^i\mu^j\nu^k b_{i,j,k}\f$ (an independent formula, used to cross-check
+  /// de Casteljau and in benchmarks)
   Value evaluate_bernstein(const Point_2& a) const {
     const Weights w = barycentric_coordinates(a);
     std::array<std::vector<FT>, 3> powers;
@@ -278,6 +324,10 @@ public:
   /*!
     returns the mixed directional derivative \f$D_{u_1}\cdots D_{u_k}F(a) =
     \frac{m!}{(m-k)!} f(u_1,\dots,u_k,a^{m-k})\f$; zero when `k > m`.
+    \param a the point at which the derivative is taken
+    \param directions the directions \f$u_1,\dots,u_k\f$
+    \returns the mixed directional derivative \f$D_{u_1}\cdots D_{u_k}F(a) = \frac{m!}{(m-k)!}
+    f(u_1,\dots,u_k,a^{m-k})\f$
   */
   Value directional_derivative(const Point_2& a, const std::vector<Vector_2>& directions) const {
     const std::size_t order = directions.size();
@@ -303,6 +353,10 @@ public:
     \f$D_uD_vF(a)\f$, and at \f$(u, a)\f$ times \f$m\f$ is \f$D_uF(a)\f$. The cost is that of
     one evaluation plus a constant, and every result is a rational function of the control
     points, `w` and the vertices: exact for an exact `FT`.
+    \param w the barycentric coordinates of the point
+    \param order the highest derivative order computed (0, 1 or 2)
+    \returns the value, gradient and Hessian of \f$F\f$ at the point with barycentric coordinates
+    `w`, with respect to the domain coordinates \f$(x, y)\f$
   */
   Point_jet<Value> jet_barycentric(const Weights& w, int order = 2) const {
     const Value zero = Value_traits<Value>::zero();
@@ -362,12 +416,20 @@ public:
   }
 
   /// returns the value, gradient and Hessian of \f$F\f$ at `a` (see `jet_barycentric()`).
+  /// \param a the point of the domain plane
+  /// \param order the highest derivative order computed (0, 1 or 2)
+  /// \returns the value, gradient and Hessian of \f$F\f$ at `a` (see `jet_barycentric()`)
   Point_jet<Value> jet(const Point_2& a, int order = 2) const {
     return jet_barycentric(barycentric_coordinates(a), order);
   }
 
   /// returns the partial derivative \f$\partial^{p+q}F / \partial x^p \partial y^q\f$ at `a`
   /// (domain coordinates).
+  /// \param a the point of the domain plane
+  /// \param p the order of differentiation in \f$x\f$
+  /// \param q the order of differentiation in \f$y\f$
+  /// \returns the partial derivative \f$\partial^{p+q}F / \partial x^p \partial y^q\f$ at `a`
+  /// (domain coordinates)
   Value partial_derivative(const Point_2& a, int p, int q) const {
     if (p < 0 || q < 0)
       throw Invalid_input("partial derivative: negative order");
@@ -386,6 +448,10 @@ public:
     \f$f(r_2^i s_2^j t_2^k)\f$ of the same polynomial (the triangle need not overlap the
     original one).
     \throws Invalid_input if `(r2, s2, t2)` is degenerate.
+    \param r2 the first corner of the new triangle
+    \param s2 the second corner of the new triangle
+    \param t2 the third corner of the new triangle
+    \returns the re-expressed patch
   */
   Bezier_triangle reexpress(const Point_2& r2, const Point_2& s2, const Point_2& t2) const {
     const Weights wr = barycentric_coordinates(r2), ws = barycentric_coordinates(s2),
@@ -415,6 +481,8 @@ public:
     the de Casteljau tetrahedron at `a` (Xu §2.7.4). For `a` inside the triangle they tile
     it with the orientation of the original.
     \throws Invalid_input if `a` lies on the line of an edge (a sub-triangle would be flat).
+    \param a the point of the domain plane
+    \returns the three patches over \f$(a,s,t)\f$, \f$(r,a,t)\f$ and \f$(r,s,a)\f$
   */
   std::array<Bezier_triangle, 3> split(const Point_2& a) const {
     const Weights w = barycentric_coordinates(a);
@@ -448,6 +516,7 @@ public:
     returns the four patches of the midpoint subdivision (Xu §2.7.4, Fig. 2.5), over
     \f$(r,c,b)\f$, \f$(c,s,a)\f$, \f$(b,a,t)\f$ and \f$(a,b,c)\f$ where \f$a,b,c\f$ are
     the midpoints of \f$st, tr, rs\f$. All four keep the orientation of the original.
+    \returns the four sub-patches
   */
   std::array<Bezier_triangle, 4> subdivide() const {
     const Point_2 &r = m_vertices[0], &s = m_vertices[1], &t = m_vertices[2];
@@ -459,6 +528,7 @@ public:
   /*!
     returns the same polynomial as a patch of degree `m + 1`:
     \f$b'_{i,j,k} = (i\,b_{i-1,j,k} + j\,b_{i,j-1,k} + k\,b_{i,j,k-1})/(m+1)\f$.
+    \returns the same polynomial as a patch of degree `m + 1`
   */
   Bezier_triangle elevate_degree() const {
     const int n = m_degree + 1;
@@ -532,6 +602,12 @@ private:
   (e.g. from `double` to `CGAL::Exact_rational`, which is exact).
   \tparam K2 the target kernel; `V2` the target value type (defaults to the value type of
   the same kind: `K2::FT` for functional patches).
+  \tparam V2 the target value type
+  \tparam K1 the source kernel
+  \tparam V1 the source value type
+  \param patch the patch to convert
+  \returns `patch` with its domain and control values converted to the kernel `K2` (e.g. from
+  `double` to `CGAL::Exact_rational`, which is exact)
 */
 template <class K2, class V2 = void, class K1, class V1>
 auto convert_patch(const Bezier_triangle<K1, V1>& patch) {

@@ -29,10 +29,15 @@ struct Multi_index {
   int k = 0; ///< multiplicity of the third domain vertex
 
   /// returns `i+j+k`, the degree the index belongs to.
+  /// \returns `i+j+k`
   int degree() const { return i + j + k; }
   /// returns the multiplicity of domain vertex `v` (0, 1 or 2).
+  /// \param v the domain vertex, 0, 1 or 2
+  /// \returns `i`, `j` or `k`
   int operator[](int v) const { return v == 0 ? i : (v == 1 ? j : k); }
   /// returns a mutable reference to the multiplicity of domain vertex `v`.
+  /// \param v the domain vertex, 0, 1 or 2
+  /// \returns a reference to `i`, `j` or `k`
   int& operator[](int v) { return v == 0 ? i : (v == 1 ? j : k); }
 
   /// returns `true` iff `a` and `b` are equal.
@@ -67,6 +72,8 @@ enum class Control_point_role {
 };
 
 /// returns a lowercase name of `role` ("corner", "star", "edge-middle", ...).
+/// \param role the role of a control point
+/// \returns a lowercase name of `role` ("corner", "star", "edge-middle", ...)
 inline std::string role_name(Control_point_role role) {
   switch (role) {
   case Control_point_role::CORNER:
@@ -89,6 +96,8 @@ inline std::string role_name(Control_point_role role) {
   \ingroup PkgTriangularSplineCore
   \brief returns the number \f$(m+1)(m+2)/2\f$ of control points of a degree `m` patch.
   \pre `m >= 0`
+  \param m the degree
+  \returns the number \f$(m+1)(m+2)/2\f$ of control points of a degree `m` patch.
 */
 inline std::size_t number_of_control_points(int m) {
   if (m < 0)
@@ -104,6 +113,10 @@ inline std::size_t number_of_control_points(int m) {
   \dots, b_{i,m-i,0}\f$ (Xu §2.7.4): the bottom row of Table 2.3 (005, 014, ..., 050)
   comes first and the apex 500 last.
   \pre `0 <= i`, `0 <= j`, `i + j <= m`
+  \param i the first component of the multi-index
+  \param j the second component of the multi-index
+  \param m the degree
+  \returns the position of `(i, j, m-i-j)` in Xu's Table 2.3 order
 */
 inline std::size_t linear_index(int i, int j, int m) {
   // Rows 0..i-1 hold (m+1) + m + ... + (m-i+2) entries.
@@ -111,6 +124,8 @@ inline std::size_t linear_index(int i, int j, int m) {
 }
 
 /// returns the position of `index` in Xu's Table 2.3 order (see `linear_index(int,int,int)`).
+/// \param index the multi-index of a control point
+/// \returns the position of `index` in Xu's Table 2.3 order (see `linear_index(int,int,int)`)
 inline std::size_t linear_index(const Multi_index& index) {
   return linear_index(index.i, index.j, index.degree());
 }
@@ -120,6 +135,10 @@ inline std::size_t linear_index(const Multi_index& index) {
   \brief returns the multi-index stored at position `position` of a degree `m` net
   (inverse of `linear_index()`).
   \pre `position < number_of_control_points(m)`
+  \param position the linear position in the net
+  \param m the degree
+  \returns the multi-index stored at position `position` of a degree `m` net (inverse of
+  `linear_index()`)
 */
 inline Multi_index multi_index(std::size_t position, int m) {
   if (position >= number_of_control_points(m))
@@ -138,6 +157,8 @@ inline Multi_index multi_index(std::size_t position, int m) {
 /*!
   \ingroup PkgTriangularSplineCore
   \brief returns all multi-indices of \f$\Delta_m\f$ in Xu's Table 2.3 order.
+  \param m the degree
+  \returns all multi-indices of \f$\Delta_m\f$ in Xu's Table 2.3 order
 */
 inline std::vector<Multi_index> multi_indices(int m) {
   std::vector<Multi_index> result;
@@ -151,6 +172,8 @@ inline std::vector<Multi_index> multi_indices(int m) {
 /*!
   \ingroup PkgTriangularSplineCore
   \brief returns the role of the control point `index` (see `Control_point_role`).
+  \param index the multi-index of a control point
+  \returns the role of the control point `index` (see `Control_point_role`)
 */
 inline Control_point_role role(const Multi_index& index) {
   const int m = index.degree();
@@ -171,6 +194,9 @@ inline Control_point_role role(const Multi_index& index) {
   \ingroup PkgTriangularSplineCore
   \brief returns the local vertex (0, 1 or 2) a corner, star or corner-inner point belongs
   to, and -1 for the other roles.
+  \param index the multi-index of a control point
+  \returns the local vertex (0, 1 or 2) a corner, star or corner-inner point belongs to, and -1 for
+  the other roles
 */
 inline int owning_vertex(const Multi_index& index) {
   const Control_point_role r = role(index);
@@ -190,6 +216,9 @@ inline int owning_vertex(const Multi_index& index) {
 
   Edge-middle points lie on the edge; a middle-inner point is the interior point next to
   the middle of that edge (the "flip point" of Xu §4.1.3 for quintics).
+  \param index the multi-index of a control point
+  \returns the local edge (the index of the opposite vertex, 0, 1 or 2) an edge-middle or
+  middle-inner point belongs to, and -1 for the other roles
 */
 inline int owning_edge(const Multi_index& index) {
   const Control_point_role r = role(index);

@@ -47,6 +47,8 @@ public:
     takes `domain` and `patches`, `patches[f]` being the patch of face `f`.
     \pre each patch is over the three corners of its face, in any order
     \throws Invalid_input if the numbers of patches and faces differ
+    \param domain the triangulated planar domain
+    \param patches the patches, `patches[f]` being the patch of face `f`
   */
   Patch_network(Domain domain, std::vector<Patch> patches)
       : m_domain(std::move(domain)), m_patches(std::move(patches)) {
@@ -57,16 +59,24 @@ public:
   }
 
   /// returns the domain.
+  /// \returns the domain
   const Domain& domain() const { return m_domain; }
   /// returns the patch of face `f`.
+  /// \param f the index of a face
+  /// \returns the patch of face `f`
   const Patch& patch(Index f) const { return m_patches[f]; }
   /// returns the patch of face `f`, for editing its control points.
+  /// \param f the index of a face
+  /// \returns the patch of face `f`, for editing its control points
   Patch& patch(Index f) { return m_patches[f]; }
   /// returns all patches, `patches()[f]` over face `f`.
+  /// \returns all patches, `patches()[f]` over face `f`
   const std::vector<Patch>& patches() const { return m_patches; }
   /// returns all patches, for editing (the number must stay that of the faces).
+  /// \returns all patches, for editing (the number must stay that of the faces)
   std::vector<Patch>& patches() { return m_patches; }
   /// returns the largest degree of the patches (0 without faces).
+  /// \returns the largest degree of the patches (0 without faces)
   int degree() const {
     int n = 0;
     for (const Patch& p : m_patches)
@@ -83,6 +93,10 @@ private:
   \ingroup PkgTriangularSplineCore
   \brief returns the patches of any `TriangularSplineNetwork` as a `Patch_network` (a copy:
   use it to edit the patches of a spline, or to keep them after the spline is gone).
+  \tparam Network a model of `TriangularSplineNetwork`
+  \param network the spline network
+  \returns the patches of any `TriangularSplineNetwork` as a `Patch_network` (a copy: use it to edit
+  the patches of a spline, or to keep them after the spline is gone)
 */
 template <class Network>
 auto make_patch_network(const Network& network) {

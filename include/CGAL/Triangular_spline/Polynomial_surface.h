@@ -38,6 +38,7 @@ public:
   using Point_2 = typename Geom_traits::Point_2;
 
   /// creates the zero polynomial of degree at most `degree`.
+  /// \param degree the degree
   explicit Polynomial_surface(int degree) : m_degree(degree) {
     if (degree < 0)
       throw Invalid_input("polynomial: negative degree " + std::to_string(degree));
@@ -45,15 +46,24 @@ public:
   }
 
   /// returns the degree bound `n`.
+  /// \returns the degree bound `n`
   int degree() const { return m_degree; }
 
   /// returns \f$c_{h,k}\f$, the coefficient of \f$x^h y^k\f$.
+  /// \param h the exponent \f$h\f$ of \f$x\f$
+  /// \param k the exponent \f$k\f$ of \f$y\f$
+  /// \returns \f$c_{h,k}\f$, the coefficient of \f$x^h y^k\f$
   const Value& coefficient(int h, int k) const { return m_coefficients[position(h, k)]; }
 
   /// sets \f$c_{h,k}\f$.
+  /// \param h the exponent \f$h\f$ of \f$x\f$
+  /// \param k the exponent \f$k\f$ of \f$y\f$
+  /// \param c the new coefficient
   void set_coefficient(int h, int k, const Value& c) { m_coefficients[position(h, k)] = c; }
 
   /// returns \f$F(a)\f$.
+  /// \param a the point of the plane
+  /// \returns \f$F(a)\f$
   Value evaluate(const Point_2& a) const {
     Value sum = Value_traits<Value>::zero();
     for (int h = 0; h <= m_degree; ++h)
@@ -70,6 +80,9 @@ public:
 
   /// returns the partial derivative \f$\partial^{p+q}F/\partial x^p\partial y^q\f$ as a
   /// polynomial.
+  /// \param p the order of differentiation in \f$x\f$
+  /// \param q the order of differentiation in \f$y\f$
+  /// \returns the derivative, as a polynomial
   Polynomial_surface derivative(int p, int q) const {
     if (p < 0 || q < 0)
       throw Invalid_input("polynomial: negative derivative order");
@@ -92,6 +105,8 @@ public:
     \f$I,J\f$, \f$|I|=h, |J|=k\f$, of \f$\prod_I u_i \prod_J v_j\f$ divided by the number
     of terms (Xu §2.7.2). The sums are the coefficients of
     \f$\prod_l (1 + u_l X + v_l Y)\f$, built in \f$O(m n^2)\f$.
+    \param arguments the blossom arguments, one per degree
+    \returns the value of the polar form
   */
   Value blossom(const std::vector<Point_2>& arguments) const {
     const int m = static_cast<int>(arguments.size());
@@ -135,6 +150,8 @@ public:
 
   /// returns the product of the scalar polynomial `a` and this polynomial (degree bound:
   /// the sum of the bounds).
+  /// \param a the scalar polynomial
+  /// \returns the product
   Polynomial_surface multiplied_by(const Polynomial_surface<Geom_traits, FT>& a) const {
     Polynomial_surface result(degree() + a.degree());
     for (int h1 = 0; h1 <= a.degree(); ++h1)
@@ -149,6 +166,11 @@ public:
 
   /// returns the Bézier patch of degree `m` (at least `degree()`) over `(r, s, t)` that
   /// equals this polynomial.
+  /// \param m the degree
+  /// \param r the first corner of the domain triangle
+  /// \param s the second corner of the domain triangle
+  /// \param t the third corner of the domain triangle
+  /// \returns the Bézier patch
   Bezier_triangle<Geom_traits, Value> to_bezier(int m, const Point_2& r, const Point_2& s,
                                                 const Point_2& t) const {
     return Bezier_triangle<Geom_traits, Value>::from_blossom(
@@ -179,6 +201,9 @@ private:
   \brief returns Enneper's surface \f$F(u,v) = (u - u^3/3 + uv^2,\; v - v^3/3 + u^2v,\;
   u^2 - v^2)\f$ (Xu §2.7.1), a cubic minimal surface; over the frame \f$r=(1,0)\f$,
   \f$s=(0,1)\f$, \f$t=(0,0)\f$ its control net is Xu's Table 2.2.
+  \tparam GeomTraits a model of `Kernel`
+  \returns Enneper's surface \f$F(u,v) = (u - u^3/3 + uv^2,\; v - v^3/3 + u^2v,\; u^2 - v^2)\f$ (Xu
+  §2.7.1), a cubic minimal surface
 */
 template <class GeomTraits>
 Polynomial_surface<GeomTraits, typename GeomTraits::Vector_3> enneper_surface() {

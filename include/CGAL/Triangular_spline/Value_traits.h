@@ -31,6 +31,8 @@ namespace Triangular_spline {
     \f$p\f$ is stored as the position vector \f$p - O\f$): dimensions 2 and 3.
 
   Users add a value type by specialising this template with the members below.
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
+  \tparam Enable `void`, used to select the specializations
 */
 template <class Value, class Enable = void>
 struct Value_traits {
@@ -39,14 +41,20 @@ struct Value_traits {
   /// the number of coordinates
   static constexpr int dimension = 1;
   /// returns the zero value (needed for derivatives, which are linear combinations)
+  /// \returns the zero value (needed for derivatives, which are linear combinations)
   static Value zero() { return Value(0); }
   /// returns coordinate `c` of `v`
+  /// \param v the value
+  /// \returns coordinate `c` of `v`
   static const FT& coordinate(const Value& v, int) { return v; }
   /// returns the value with the given coordinates
+  /// \param c the coordinates
+  /// \returns the value with the given coordinates
   static Value from_coordinates(const std::array<FT, 1>& c) { return c[0]; }
 };
 
 /// the value traits of `CGAL::Vector_3` (parametric patches in space).
+/// \tparam Vector a CGAL vector type
 template <class Vector>
 struct Value_traits<Vector, std::enable_if_t<std::is_same<
                                 typename Kernel_traits<Vector>::Kernel::Vector_3, Vector>::value>> {
@@ -55,14 +63,21 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
   /// the number of coordinates
   static constexpr int dimension = 3;
   /// returns the null vector
+  /// \returns the null vector
   static Vector zero() { return Vector(NULL_VECTOR); }
   /// returns coordinate `c` (0, 1 or 2) of `v`
+  /// \param v the value
+  /// \param c the index of the coordinate
+  /// \returns coordinate `c` (0, 1 or 2) of `v`
   static FT coordinate(const Vector& v, int c) { return v[c]; }
   /// returns the vector with the given coordinates
+  /// \param c the coordinates
+  /// \returns the vector with the given coordinates
   static Vector from_coordinates(const std::array<FT, 3>& c) { return Vector(c[0], c[1], c[2]); }
 };
 
 /// the value traits of `CGAL::Vector_2` (parametric patches in the plane).
+/// \tparam Vector a CGAL vector type
 template <class Vector>
 struct Value_traits<Vector, std::enable_if_t<std::is_same<
                                 typename Kernel_traits<Vector>::Kernel::Vector_2, Vector>::value>> {
@@ -71,10 +86,16 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
   /// the number of coordinates
   static constexpr int dimension = 2;
   /// returns the null vector
+  /// \returns the null vector
   static Vector zero() { return Vector(NULL_VECTOR); }
   /// returns coordinate `c` (0 or 1) of `v`
+  /// \param v the value
+  /// \param c the index of the coordinate
+  /// \returns coordinate `c` (0 or 1) of `v`
   static FT coordinate(const Vector& v, int c) { return v[c]; }
   /// returns the vector with the given coordinates
+  /// \param c the coordinates
+  /// \returns the vector with the given coordinates
   static Vector from_coordinates(const std::array<FT, 2>& c) { return Vector(c[0], c[1]); }
 };
 
@@ -82,6 +103,10 @@ struct Value_traits<Vector, std::enable_if_t<std::is_same<
   \ingroup PkgTriangularSplineCore
   \brief returns the largest absolute coordinate of `v`, converted to `double`
   (the norm used for residuals).
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
+  \param v the value
+  \returns the largest absolute coordinate of `v`, converted to `double` (the norm used for
+  residuals)
 */
 template <class Value>
 double max_abs_coordinate(const Value& v) {
@@ -100,6 +125,9 @@ double max_abs_coordinate(const Value& v) {
   \ingroup PkgTriangularSplineCore
   \brief returns `true` iff every coordinate of `v` is zero (an exact test for exact
   number types).
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
+  \param v the value
+  \returns `true` iff every coordinate of `v` is zero (an exact test for exact number types)
 */
 template <class Value>
 bool is_zero_value(const Value& v) {
@@ -138,6 +166,9 @@ double log10_of_integer(Integer z) {
   \f$10^{308}\f$ into infinity; for exact fraction types (`Gmpq`, `mpq_class`, ...) the
   magnitude is taken from the numerator and the denominator instead, so a residual of
   \f$10^{-500}\f$ reads \f$-500\f$, not \f$-\infty\f$. Accurate to about 15 digits.
+  \tparam FT a number type
+  \param x the number
+  \returns \f$\log_{10} |x|\f$ without underflow or overflow
 */
 template <class FT>
 double log10_magnitude(const FT& x) {
@@ -160,6 +191,10 @@ double log10_magnitude(const FT& x) {
   \ingroup PkgTriangularSplineCore
   \brief returns \f$\log_{10}\f$ of the largest absolute coordinate of `v`, without underflow
   (`log10_magnitude()`): \f$-\infty\f$ iff `v` is zero.
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
+  \param v the value
+  \returns \f$\log_{10}\f$ of the largest absolute coordinate of `v`, without underflow
+  (`log10_magnitude()`)
 */
 template <class Value>
 double max_abs_coordinate_log10(const Value& v) {
@@ -177,6 +212,11 @@ double max_abs_coordinate_log10(const Value& v) {
   \ingroup PkgTriangularSplineCore
   \brief returns `true` iff every coordinate of `v` is at most `tolerance` in absolute value,
   compared exactly in the number type (the `double` tolerance converts exactly).
+  \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
+  \param v the value
+  \param tolerance the bound on the absolute value of each coordinate
+  \returns `true` iff every coordinate of `v` is at most `tolerance` in absolute value, compared
+  exactly in the number type (the `double` tolerance converts exactly)
 */
 template <class Value>
 bool is_within_tolerance(const Value& v, double tolerance) {
@@ -192,6 +232,9 @@ bool is_within_tolerance(const Value& v, double tolerance) {
 }
 
 /// returns `true` iff every coordinate of `v` is finite (always true for exact types).
+/// \tparam Value a number type, or a CGAL `Vector_2` or `Vector_3`
+/// \param v the value
+/// \returns `true` iff every coordinate of `v` is finite (always true for exact types)
 template <class Value>
 bool is_finite_value(const Value& v) {
   using Traits = Value_traits<Value>;

@@ -31,7 +31,7 @@ namespace Triangular_spline {
 */
 enum class Join_conditions {
   /// for each order \f$l \le k\f$ and \f$i+j = m-l\f$: \f$f_B(q^l r^i s^j) = f_A(q^l r^i s^j)\f$,
-  /// i.e. the control points of B next to the edge equal those of A's polynomial extended
+  /// i.e.\ the control points of B next to the edge equal those of A's polynomial extended
   /// over B's triangle. Order 0 is Xu's (3.4), order 1 is (3.5). \f$\sum_l (m-l+1)\f$
   /// conditions, the minimal number.
   EXTENSION,
@@ -58,6 +58,8 @@ enum class Certificate_verdict {
 };
 
 /// returns `"proof"`, `"within_tolerance"` or `"failed"`
+/// \param verdict the verdict
+/// \returns `"proof"`, `"within_tolerance"` or `"failed"`
 inline const char* verdict_name(Certificate_verdict verdict) {
   switch (verdict) {
   case Certificate_verdict::PROOF:
@@ -71,6 +73,10 @@ inline const char* verdict_name(Certificate_verdict verdict) {
 
 /// the verdict of a check in which `failed` conditions failed and `nonzero` were not exactly
 /// zero; only an exact number type with every condition zero makes a proof
+/// \param exact `true` iff the number type is exact
+/// \param failed the number of failed conditions
+/// \param nonzero the number of conditions not exactly zero
+/// \returns the verdict
 inline Certificate_verdict certificate_verdict(bool exact, std::size_t failed,
                                                std::size_t nonzero) {
   if (failed > 0)
@@ -193,6 +199,8 @@ inline void summarize_conditions(Join_report& report) {
   type). With an exact number type and `tolerance = 0` the verdict is therefore a proof;
   `Join_condition::zero` tells a proven condition from one accepted by the tolerance.
 
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param A the first patch
   \param B the second patch, of the same degree \f$m\f$ as `A`
   \param k the continuity order, \f$0 \le k \le m\f$
@@ -201,6 +209,7 @@ inline void summarize_conditions(Join_report& report) {
   differences satisfy a condition)
   \throws Invalid_input if the degrees differ, `k` is out of range, or the triangles are
   not adjacent across one edge.
+  \returns the join report
 */
 template <class GeomTraits, class Value>
 Join_report
@@ -282,6 +291,12 @@ check_join(const Bezier_triangle<GeomTraits, Value>& A, const Bezier_triangle<Ge
   The conditions and residuals are those of `check_join(A, B, 1, Join_conditions::EXTENSION)`
   but no blossom is evaluated: about \f$3m\f$ multiplications per edge, which is what makes
   exact certification of large splines affordable.
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
+  \param A the first patch
+  \param B the second patch, over a triangle adjacent to that of `A`
+  \param tolerance absolute tolerance on each coordinate of a difference (0: exact zero)
+  \returns the join report
 */
 template <class GeomTraits, class Value>
 Join_report check_C1_join(const Bezier_triangle<GeomTraits, Value>& A,
@@ -344,6 +359,11 @@ Join_report check_C1_join(const Bezier_triangle<GeomTraits, Value>& A,
   \tparam GeomTraits a kernel with an exact number type (e.g.
   `CGAL::Simple_cartesian<CGAL::Exact_rational>`); with `double`, use `check_join()` and
   read the residuals, or convert the patches exactly with `convert_patch()` first.
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
+  \param A the first patch
+  \param B the second patch, over a triangle adjacent to that of `A`
+  \param k the order of continuity
+  \returns `true` iff `A` and `B` join with \f$C^k\f$ continuity
 */
 template <class GeomTraits, class Value>
 bool is_Ck_join(const Bezier_triangle<GeomTraits, Value>& A,
@@ -357,6 +377,13 @@ bool is_Ck_join(const Bezier_triangle<GeomTraits, Value>& A,
   \ingroup PkgTriangularSplineContinuity
   \brief returns the largest residual of the \f$C^k\f$ conditions between `A` and `B`
   (absolute, largest coordinate; zero iff they join \f$C^k\f$ up to the arithmetic).
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
+  \param A the first patch
+  \param B the second patch, over a triangle adjacent to that of `A`
+  \param k the order of continuity
+  \returns the largest residual of the \f$C^k\f$ conditions between `A` and `B` (absolute, largest
+  coordinate; zero iff they join \f$C^k\f$ up to the arithmetic)
 */
 template <class GeomTraits, class Value>
 double join_residual(const Bezier_triangle<GeomTraits, Value>& A,

@@ -75,6 +75,10 @@ inline double dot(const std::array<double, 3>& a, const std::array<double, 3>& b
   \ingroup PkgTriangularSplineCore
   \brief returns the first and second derivatives of the surface of `patch` at `a`.
   \tparam Value a scalar (graph surface) or a 3D vector type
+  \tparam GeomTraits a model of `Kernel`
+  \param patch the Bézier patch
+  \param a the point of the domain plane
+  \returns the first and second derivatives of the surface of `patch` at `a`
 */
 template <class GeomTraits, class Value>
 Surface_derivatives surface_derivatives(const Bezier_triangle<GeomTraits, Value>& patch,
@@ -100,6 +104,8 @@ Surface_derivatives surface_derivatives(const Bezier_triangle<GeomTraits, Value>
   \f$EG - F^2\f$ is computed as \f$|F_x \times F_y|^2\f$, the same quantity without the
   cancellation of \f$EG - F^2\f$ on steep surfaces (where \f$E G\f$ and \f$F^2\f$ are both
   of size \f$|\nabla F|^4\f$).
+  \param d the first and second derivatives
+  \returns the unit normal, Gaussian and mean curvature from first and second derivatives (`double`)
 */
 inline Surface_curvature surface_curvature(const Surface_derivatives& d) {
   Surface_curvature result;
@@ -127,6 +133,12 @@ inline Surface_curvature surface_curvature(const Surface_derivatives& d) {
   \ingroup PkgTriangularSplineCore
   \brief returns the unit normal, Gaussian and mean curvature of the surface of `patch` at
   `a`, from the exact first and second derivatives (square roots are taken in `double`).
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
+  \param patch the Bézier patch
+  \param a the point of the domain plane
+  \returns the unit normal, Gaussian and mean curvature of the surface of `patch` at `a`, from the
+  exact first and second derivatives (square roots are taken in `double`)
 */
 template <class GeomTraits, class Value>
 Surface_curvature surface_curvature(const Bezier_triangle<GeomTraits, Value>& patch,
@@ -138,6 +150,12 @@ Surface_curvature surface_curvature(const Bezier_triangle<GeomTraits, Value>& pa
   \ingroup PkgTriangularSplineCore
   \brief returns the unit normal of the surface of `patch` at `a` (see `surface_curvature()`),
   zero where the surface is singular.
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
+  \param patch the Bézier patch
+  \param a the point of the domain plane
+  \returns the unit normal of the surface of `patch` at `a` (see `surface_curvature()`), zero where
+  the surface is singular
 */
 template <class GeomTraits, class Value>
 std::array<double, 3> surface_normal(const Bezier_triangle<GeomTraits, Value>& patch,

@@ -209,6 +209,11 @@ evaluate_at(const TriangularSplineNetwork& network,
   \ingroup PkgTriangularSplineSplines
   \brief evaluates a spline at one point: the value, or `std::nullopt` outside the domain
   (see the overload for many points).
+  \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork`
+  \param network the spline network
+  \param locator the point locator of the network's domain
+  \param query the query point
+  \returns the value, or `std::nullopt` outside the domain
 */
 template <class TriangularSplineNetwork>
 std::optional<internal::Network_value_t<TriangularSplineNetwork>>
@@ -316,6 +321,13 @@ evaluate_jets(const TriangularSplineNetwork& network,
   \ingroup PkgTriangularSplineSplines
   \brief evaluates the value, gradient and Hessian of a spline at one point, locating
   included (see the overload for many points).
+  \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork`
+  \param network the spline network
+  \param locator the point locator of the network's domain
+  \param query the query point
+  \param outside what to return outside the domain
+  \param order the highest derivative order wanted (0, 1 or 2); higher derivatives are zero
+  \returns the value, gradient and Hessian, or `std::nullopt` outside the domain
 */
 template <class TriangularSplineNetwork>
 std::optional<Point_jet<internal::Network_value_t<TriangularSplineNetwork>>>

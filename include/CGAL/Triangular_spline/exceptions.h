@@ -23,6 +23,7 @@ namespace Triangular_spline {
 class Invalid_input : public std::invalid_argument {
 public:
   /// creates the exception with the message `what`.
+  /// \param what the message
   explicit Invalid_input(const std::string& what) : std::invalid_argument(what) {}
 };
 

@@ -33,15 +33,15 @@ namespace Triangular_spline {
   \brief the edge-to-face reparameterization of Fang's mesh interpolation algorithm.
 */
 enum class Blending_variant {
-  /// the basic algorithm (ch. 5, eq. 5.8; multi-sided eq. 7.2): one affine (similarity)
+  /// the basic algorithm (ch.\ 5, eq.\ 5.8; multi-sided eq.\ 7.2): one affine (similarity)
   /// map per face side; \f$C^d\f$ across edges, only normals (\f$d \ge 1\f$) continuous at
   /// the vertices
   BASIC,
-  /// improved with vertex continuity (§6.1, eqs. 6.8–6.11; multi-sided §7.3, eqs.
-  /// 7.6–7.8): two affine maps blended so that each face is \f$C^d\f$ at its corners in the
+  /// improved with vertex continuity (§6.1, eqs.\ 6.8–6.11; multi-sided §7.3, eqs.\ 7.6–7.8):
+  /// two affine maps blended so that each face is \f$C^d\f$ at its corners in the
   /// vertex frames
   VERTEX_CONTINUITY,
-  /// improved with open-set continuity (§6.2, eqs. 6.18–6.21): the affine maps are used
+  /// improved with open-set continuity (§6.2, eqs.\ 6.18–6.21): the affine maps are used
   /// unblended near the corners, so the surface is \f$C^d\f$ in the vertex frame on a
   /// neighbourhood of every vertex. For multi-sided faces (not in the thesis) the
   /// neighbourhoods are the discs of radius 1/3 of the side around its ends, and the blend
@@ -52,6 +52,8 @@ enum class Blending_variant {
 /*!
   \ingroup PkgTriangularSplineBlending
   \brief returns "basic", "vertex" or "open" (the names of the command-line tool).
+  \param v the index of a vertex
+  \returns "basic", "vertex" or "open" (the names of the command-line tool)
 */
 inline const char* to_string(Blending_variant v) {
   switch (v) {
@@ -277,6 +279,8 @@ public:
     parallel to the normal of one of its vertices; the vertex surface conditions are
     dependent; a face with more than three sides has a zero mean normal or a projection
     that is not strictly convex (§7.1).
+    \param mesh the input mesh
+    \param options the blending options (order, variant, ...)
   */
   explicit Mesh_blending_surface(const Mesh& mesh, const Mesh_blending_options& options = {})
       : m_mesh(mesh), m_options(options) {
@@ -302,34 +306,54 @@ public:
   /// @{
 
   /// returns the (garbage-free) copy of the input mesh that the indices refer to.
+  /// \returns the (garbage-free) copy of the input mesh that the indices refer to
   const Mesh& mesh() const { return m_mesh; }
   /// returns the options.
+  /// \returns the options
   const Mesh_blending_options& options() const { return m_options; }
   /// returns the blending order \f$d\f$.
+  /// \returns the blending order \f$d\f$
   int order() const { return m_options.order; }
   /// returns the variant.
+  /// \returns the variant
   Blending_variant variant() const { return m_options.variant; }
   /// returns `true` if the vertex normals were estimated from the faces.
+  /// \returns `true` if the vertex normals were estimated from the faces
   bool has_estimated_normals() const { return m_estimated_normals; }
   /// returns the number of affine edge-to-face maps that reverse orientation (a face whose
   /// opposite corner projects across the edge in a vertex frame): a sign of a mesh too
   /// sharp for its normals; the surface is still defined but may fold there.
+  /// \returns the number of orientation-reversing edge-to-face maps
   std::size_t number_of_folded_maps() const { return m_folded; }
   /// returns the number of vertices.
+  /// \returns the number of vertices
   std::size_t number_of_vertices() const { return m_vertices.size(); }
   /// returns the number of edges.
+  /// \returns the number of edges
   std::size_t number_of_edges() const { return m_edges.size(); }
   /// returns the number of faces.
+  /// \returns the number of faces
   std::size_t number_of_faces() const { return m_faces.size(); }
   /// returns the number of corners (= sides) of face `f`.
+  /// \param f the index of a face
+  /// \returns the number of corners (= sides) of face `f`
   std::size_t face_size(std::size_t f) const { return m_faces.at(f).vertex.size(); }
   /// returns the vertex at corner `c` of face `f`.
+  /// \param f the index of a face
+  /// \param c the index of a corner of face `f`
+  /// \returns the vertex at corner `c` of face `f`
   std::size_t face_vertex(std::size_t f, std::size_t c) const { return m_faces.at(f).vertex.at(c); }
   /// returns the unit normal of vertex `v` used by the construction.
+  /// \param v the index of a vertex
+  /// \returns the unit normal of vertex `v` used by the construction
   const Vec3& vertex_normal(std::size_t v) const { return m_vertices.at(v).normal; }
   /// returns the position of vertex `v`.
+  /// \param v the index of a vertex
+  /// \returns the position of vertex `v`
   const Vec3& vertex_position(std::size_t v) const { return m_vertices.at(v).position; }
   /// returns the height polynomial \f$P\f$ of the vertex surface of `v` in its frame.
+  /// \param v the index of a vertex
+  /// \returns the height polynomial \f$P\f$ of the vertex surface of `v` in its frame
   const Bivariate_polynomial& vertex_height(std::size_t v) const { return m_vertices.at(v).height; }
   /*!
     replaces the height polynomial of the vertex surface of `v` (in its frame, see
@@ -340,6 +364,8 @@ public:
 
     \throws Invalid_input if `v` is out of range or \f$P(0,0)\f$, \f$P_x(0,0)\f$,
     \f$P_y(0,0)\f$ is not zero or a coefficient is not finite
+    \param v the index of a vertex
+    \param height the new height polynomial, in the frame of `v`
   */
   void set_vertex_height(std::size_t v, const Bivariate_polynomial& height) {
     if (v >= m_vertices.size())
@@ -357,22 +383,34 @@ public:
     m_vertices[v].height = height;
   }
   /// returns the unit length \f$L\f$ of the frame of vertex `v`.
+  /// \param v the index of a vertex
+  /// \returns the unit length \f$L\f$ of the frame of vertex `v`
   double vertex_scale(std::size_t v) const { return m_vertices.at(v).scale; }
   /// returns the head and tail vertices of edge `e`.
+  /// \param e the index of an edge
+  /// \returns the head and tail vertices of edge `e`
   std::array<std::size_t, 2> edge_vertices(std::size_t e) const {
     return {{m_edges.at(e).head, m_edges.at(e).tail}};
   }
   /// returns the faces incident to edge `e` and, for each, the side of that face lying on
   /// `e` (one pair for a border edge).
+  /// \param e the index of an edge
+  /// \returns the pairs (face, side) of the faces incident to `e`
   std::vector<std::pair<std::size_t, std::size_t>> edge_sides(std::size_t e) const {
     return m_edges.at(e).sides;
   }
   /// returns the parameter of corner `c` of face `f`: \f$(1,0)\f$, \f$(0,1)\f$, \f$(0,0)\f$
   /// for a triangle, the projected corner in the face frame otherwise.
+  /// \param f the index of a face
+  /// \param c the index of a corner of face `f`
+  /// \returns the parameter of corner `c` of face `f`
   const Vec2& corner_parameter(std::size_t f, std::size_t c) const {
     return m_faces.at(f).corner.at(c);
   }
   /// returns the edge of side `s` of face `f`, and the face corners at its head and tail.
+  /// \param f the index of a face
+  /// \param s the index of a side of face `f`
+  /// \returns the edge of side `s` of face `f`, and the face corners at its head and tail
   std::array<std::size_t, 3> side_edge(std::size_t f, std::size_t s) const {
     const Side& side = m_faces.at(f).sides.at(s);
     return {{side.edge, static_cast<std::size_t>(side.end_corner[0]),
@@ -380,6 +418,10 @@ public:
   }
   /// returns the face parameter of the point of side `s` of face `f` at fraction `t` from the
   /// head of its edge to the tail.
+  /// \param f the index of a face
+  /// \param s the index of a side of face `f`
+  /// \param t the fraction of the way from the head of the edge to its tail
+  /// \returns the face parameter of the point
   Vec2 side_point(std::size_t f, std::size_t s, double t) const {
     const Face_data& F = m_faces.at(f);
     const Side& side = F.sides.at(s);
@@ -388,6 +430,9 @@ public:
     return {{h[0] + t * (e[0] - h[0]), h[1] + t * (e[1] - h[1])}};
   }
   /// returns the projection \f$\pi_V(q)\f$ of a point to the frame of vertex `v`.
+  /// \param v the index of a vertex
+  /// \param q the point to project
+  /// \returns the projection \f$\pi_V(q)\f$ of a point to the frame of vertex `v`
   Vec2 to_vertex_frame(std::size_t v, const Vec3& q) const {
     const Vertex_data& V = m_vertices.at(v);
     const Vec3 d = internal::sub3(q, V.position);
@@ -399,6 +444,9 @@ public:
     corners to their projections \f$\pi_V\f$ — the map the improved reparameterizations
     reproduce at the corner (Fang, Fig. 6.2, the "blue" triangle), as coefficients
     \f$(m_0, \dots, m_5)\f$ of \f$(x, y) = (m_0 a + m_1 b + m_2, m_3 a + m_4 b + m_5)\f$.
+    \param f the index of a face
+    \param c the index of a corner of face `f`
+    \returns the coefficients of the affine map \f$A_{F,V}\f$
   */
   std::array<double, 6> face_to_vertex_frame(std::size_t f, std::size_t c) const {
     return vertex_map(f, c).m;
@@ -410,6 +458,11 @@ public:
   /// @{
 
   /// returns \f$S^V(x, y)\f$, the vertex surface of `v` at frame coordinates \f$(x, y)\f$.
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param v the index of a vertex
+  /// \param x the first frame coordinate
+  /// \param y the second frame coordinate
+  /// \returns \f$S^V(x, y)\f$, the vertex surface of `v` at frame coordinates \f$(x, y)\f$
   template <class T>
   std::array<T, 3> vertex_surface(std::size_t v, const T& x, const T& y) const {
     const Vertex_data& V = m_vertices[v];
@@ -422,8 +475,14 @@ public:
     return p;
   }
 
-  /// returns the map \f$r^{E,V}\f$ (eq. 5.4) from the frame of edge `e` to the frame of its
+  /// returns the map \f$r^{E,V}\f$ (eq.\ 5.4) from the frame of edge `e` to the frame of its
   /// end `end` (0: head, 1: tail).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param e the index of an edge
+  /// \param end the end of the edge: 0 for its head, 1 for its tail
+  /// \param x the first frame coordinate
+  /// \param y the second frame coordinate
+  /// \returns the map \f$r^{E,V}\f$ applied to the point
   template <class T>
   std::array<T, 2> edge_to_vertex(std::size_t e, int end, const T& x, const T& y) const {
     const Edge_data& E = m_edges[e];
@@ -434,7 +493,12 @@ public:
     return {{X, Y}};
   }
 
-  /// returns \f$S^E(x, y)\f$, the edge surface of `e` (eq. 5.6).
+  /// returns \f$S^E(x, y)\f$, the edge surface of `e` (eq.\ 5.6).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param e the index of an edge
+  /// \param x the first frame coordinate
+  /// \param y the second frame coordinate
+  /// \returns \f$S^E(x, y)\f$, the edge surface of `e` (eq. 5.6)
   template <class T>
   std::array<T, 3> edge_surface(std::size_t e, const T& x, const T& y) const {
     const T other = 1.0 - y;
@@ -459,6 +523,12 @@ public:
 
   /// returns the map \f$r^{F,E}\f$ from the parameters of face `f` to the frame of the
   /// edge of its side `s`, as the variant defines it.
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param f the index of a face
+  /// \param s the index of a side of face `f`
+  /// \param a the first face parameter
+  /// \param b the second face parameter
+  /// \returns the map \f$r^{F,E}\f$ applied to the point
   template <class T>
   std::array<T, 2> face_to_edge(std::size_t f, std::size_t s, const T& a, const T& b) const {
     const Face_data& F = m_faces[f];
@@ -509,8 +579,13 @@ public:
   }
 
   /// returns the inheritance indicators of face `f` at parameter \f$(a, b)\f$: the
-  /// barycentric coordinates of a triangle (Def. 4.2), the distances to the side lines of a
-  /// polygon (Def. 7.2; exactly zero at the corners).
+  /// barycentric coordinates of a triangle (Def.\ 4.2), the distances to the side lines of a
+  /// polygon (Def.\ 7.2; exactly zero at the corners).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param f the index of a face
+  /// \param a the first face parameter
+  /// \param b the second face parameter
+  /// \returns the inheritance indicators, one per side of `f`
   template <class T>
   std::vector<T> face_indicators(std::size_t f, const T& a, const T& b) const {
     const Face_data& F = m_faces[f];
@@ -531,8 +606,13 @@ public:
     return m;
   }
 
-  /// returns \f$S^F(a, b)\f$, the surface of face `f` at parameter \f$(a, b)\f$ (eqs. 5.10,
+  /// returns \f$S^F(a, b)\f$, the surface of face `f` at parameter \f$(a, b)\f$ (eqs.\ 5.10,
   /// 7.5).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param f the index of a face
+  /// \param a the first face parameter
+  /// \param b the second face parameter
+  /// \returns the point \f$S^F(a, b)\f$
   template <class T>
   std::array<T, 3> face_surface(std::size_t f, const T& a, const T& b) const {
     const Face_data& F = m_faces[f];
@@ -554,6 +634,12 @@ public:
   }
 
   /// returns the sub-surface \f$S^{E}_F = S^E \circ r^{F,E}\f$ of side `s` of face `f`.
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param f the index of a face
+  /// \param s the index of a side of face `f`
+  /// \param a the first face parameter
+  /// \param b the second face parameter
+  /// \returns the sub-surface \f$S^{E}_F = S^E \circ r^{F,E}\f$ of side `s` of face `f`
   template <class T>
   std::array<T, 3> side_surface(std::size_t f, std::size_t s, const T& a, const T& b) const {
     const std::array<T, 2> xy = face_to_edge(f, s, a, b);
@@ -561,6 +647,10 @@ public:
   }
 
   /// returns the point of the surface of face `fd` at parameter \f$(a, b)\f$.
+  /// \param fd the face of the input mesh
+  /// \param a the first face parameter
+  /// \param b the second face parameter
+  /// \returns the point of the surface of face `fd` at parameter \f$(a, b)\f$
   Point_3 evaluate(face_descriptor fd, double a, double b) const {
     const std::array<double, 3> p = face_surface(static_cast<std::size_t>(fd), a, b);
     return Point_3(p[0], p[1], p[2]);
@@ -568,6 +658,10 @@ public:
 
   /// returns the first and second derivatives of the surface of face `f` with respect to
   /// its parameters at \f$(a, b)\f$ (exact differentiation with jets).
+  /// \param f the index of a face
+  /// \param a the first face parameter
+  /// \param b the second face parameter
+  /// \returns the first and second derivatives
   Surface_derivatives derivatives(std::size_t f, double a, double b) const {
     const std::array<Curvature_jet, 3> p =
         face_surface(f, Curvature_jet::variable(a, 0, 2), Curvature_jet::variable(b, 1, 2));
@@ -575,6 +669,9 @@ public:
   }
 
   /// returns the first and second derivatives of a jet-valued point (order \f$\ge 2\f$).
+  /// \tparam J a `Taylor_jet` type
+  /// \param p the point whose coordinates are jets
+  /// \returns the first and second derivatives of a jet-valued point (order \f$\ge 2\f$)
   template <class J>
   static Surface_derivatives to_derivatives(const std::array<J, 3>& p) {
     Surface_derivatives d;
@@ -608,7 +705,11 @@ public:
     face property `"f:input_face"` (`std::size_t`) gives the input face of each triangle.
     `out` is cleared first.
 
+    \tparam OutPoint the point type of the output mesh
     \throws Invalid_input if `resolution` is outside [1, 1024]
+    \param out the output mesh (cleared first)
+    \param resolution the number of segments per edge
+    \returns the statistics of the tessellation
   */
   template <class OutPoint>
   Blending_tessellation_statistics tessellate(CGAL::Surface_mesh<OutPoint>& out,

@@ -50,12 +50,15 @@ public:
   Taylor_jet() : m_order(MaxOrder) { m_c.fill(FT(0)); }
 
   /// creates the constant `c`, known to every order.
+  /// \param c the constant value
   Taylor_jet(const FT& c) : m_order(MaxOrder) { // NOLINT: implicit on purpose, like a number
     m_c.fill(FT(0));
     m_c[0] = c;
   }
 
   /// creates the constant `c` truncated at order `order`.
+  /// \param c the constant value
+  /// \param order the order of the jet
   Taylor_jet(const FT& c, int order) : m_order(checked(order)) {
     m_c.fill(FT(0));
     m_c[0] = c;
@@ -63,6 +66,10 @@ public:
 
   /// returns the jet of the coordinate function \f$x\f$ (`which == 0`) or \f$y\f$
   /// (`which == 1`) at a point whose coordinate is `value`, to order `order`.
+  /// \param value the coordinate of the expansion point
+  /// \param which 0 for \f$x\f$, 1 for \f$y\f$
+  /// \param order the order
+  /// \returns the jet of the coordinate function
   static Taylor_jet variable(const FT& value, int which, int order) {
     Taylor_jet j(value, order);
     if (order >= 1)
@@ -72,6 +79,11 @@ public:
 
   /// returns the jet of the affine function \f$c + a\,x + b\,y\f$ (variables relative to the
   /// expansion point) to order `order`.
+  /// \param c the constant term
+  /// \param a the coefficient of \f$x\f$
+  /// \param b the coefficient of \f$y\f$
+  /// \param order the order
+  /// \returns the jet of the affine function
   static Taylor_jet affine(const FT& c, const FT& a, const FT& b, int order) {
     Taylor_jet j(c, order);
     if (order >= 1) {
@@ -82,12 +94,17 @@ public:
   }
 
   /// returns the order \f$K\f$ to which this jet is known.
+  /// \returns the order \f$K\f$ to which this jet is known
   int order() const { return m_order; }
 
   /// returns the value \f$c_{0,0}\f$.
+  /// \returns the value \f$c_{0,0}\f$
   const FT& value() const { return m_c[0]; }
 
   /// returns the Taylor coefficient \f$c_{a,b}\f$ (zero above the order).
+  /// \param a the exponent of \f$x\f$
+  /// \param b the exponent of \f$y\f$
+  /// \returns the Taylor coefficient \f$c_{a,b}\f$ (zero above the order)
   FT coefficient(int a, int b) const {
     if (a < 0 || b < 0 || a + b > m_order)
       return FT(0);
@@ -95,6 +112,9 @@ public:
   }
 
   /// sets the Taylor coefficient \f$c_{a,b}\f$, \f$a + b \le\f$ `order()`.
+  /// \param a the exponent of \f$x\f$
+  /// \param b the exponent of \f$y\f$
+  /// \param c the new coefficient
   void set_coefficient(int a, int b, const FT& c) {
     if (a < 0 || b < 0 || a + b > m_order)
       throw Invalid_input("Taylor_jet: no coefficient (" + std::to_string(a) + ", " +
@@ -103,6 +123,9 @@ public:
   }
 
   /// returns the partial derivative \f$\partial_x^a\partial_y^b F = a!\,b!\,c_{a,b}\f$.
+  /// \param a the exponent of \f$x\f$
+  /// \param b the exponent of \f$y\f$
+  /// \returns the partial derivative \f$\partial_x^a\partial_y^b F = a!\,b!\,c_{a,b}\f$
   FT derivative(int a, int b) const {
     FT factor(1);
     for (int i = 2; i <= a; ++i)
@@ -114,6 +137,8 @@ public:
   }
 
   /// returns this jet truncated to order `order` (at most the current order).
+  /// \param order the order of the result
+  /// \returns this jet truncated to order `order` (at most the current order)
   Taylor_jet truncated(int order) const {
     Taylor_jet r(*this);
     r.m_order = (std::min)(m_order, checked(order));
@@ -123,14 +148,20 @@ public:
   }
 
   /// returns the linear index of \f$c_{a,b}\f$: by total degree, then by \f$b\f$.
+  /// \param a the exponent of \f$x\f$
+  /// \param b the exponent of \f$y\f$
+  /// \returns the linear index of \f$c_{a,b}\f$
   static constexpr int index(int a, int b) { return (a + b) * (a + b + 1) / 2 + b; }
   /// returns the number of coefficients of a jet of order `order`.
+  /// \param order the order of the jet
+  /// \returns the number of coefficients of a jet of order `order`
   static constexpr int size(int order) { return (order + 1) * (order + 2) / 2; }
 
   /// \name Arithmetic
   /// @{
 
   /// returns the negated jet.
+  /// \returns the negated jet
   Taylor_jet operator-() const {
     Taylor_jet r(*this);
     for (int i = 0; i < size(m_order); ++i)
@@ -138,6 +169,8 @@ public:
     return r;
   }
   /// adds `b`; the order becomes the smaller of both orders.
+  /// \param b the other jet
+  /// \returns `*this`
   Taylor_jet& operator+=(const Taylor_jet& b) {
     m_order = (std::min)(m_order, b.m_order);
     for (int i = 0; i < size(m_order); ++i)
@@ -147,6 +180,8 @@ public:
     return *this;
   }
   /// subtracts `b`; the order becomes the smaller of both orders.
+  /// \param b the other jet
+  /// \returns `*this`
   Taylor_jet& operator-=(const Taylor_jet& b) {
     m_order = (std::min)(m_order, b.m_order);
     for (int i = 0; i < size(m_order); ++i)
@@ -156,6 +191,8 @@ public:
     return *this;
   }
   /// multiplies every coefficient by `s`.
+  /// \param s the scalar factor
+  /// \returns `*this`
   Taylor_jet& operator*=(const FT& s) {
     for (int i = 0; i < size(m_order); ++i)
       m_c[static_cast<std::size_t>(i)] = m_c[static_cast<std::size_t>(i)] * s;
@@ -163,6 +200,8 @@ public:
   }
   /// divides every coefficient by `s`.
   /// \throws Invalid_input if `s` is zero
+  /// \param s the scalar factor
+  /// \returns `*this`
   Taylor_jet& operator/=(const FT& s) {
     if (s == FT(0))
       throw Invalid_input("Taylor_jet: division by zero");
@@ -171,12 +210,16 @@ public:
     return *this;
   }
   /// multiplies by `b` (truncated Cauchy product).
+  /// \param b the other jet
+  /// \returns `*this`
   Taylor_jet& operator*=(const Taylor_jet& b) {
     *this = *this * b;
     return *this;
   }
   /// divides by `b`.
   /// \throws Invalid_input if the value of `b` is zero
+  /// \param b the other jet
+  /// \returns `*this`
   Taylor_jet& operator/=(const Taylor_jet& b) {
     *this = *this / b;
     return *this;
@@ -299,7 +342,11 @@ private:
 /*!
   \ingroup PkgTriangularSplineBlending
   \brief returns \f$F^e\f$ for an integer \f$e \ge 1\f$ (numbers or jets).
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input if \f$e < 1\f$
+  \param base the number or jet \f$F\f$
+  \param exponent the exponent \f$e\f$
+  \returns \f$F^e\f$ for an integer \f$e \ge 1\f$ (numbers or jets)
 */
 template <class T>
 T integer_power(const T& base, int exponent) {
@@ -367,7 +414,12 @@ Taylor_jet<FT, K> compose(const Taylor_jet<FT, K>& j, const Taylor_jet<FT, K>& d
   `rx`, `ry` are the jets of the two components of \f$R\f$ at \f$p\f$ (in the variables of
   \f$p\f$). Used to express a surface in the coordinate system of an adjacent element
   (Fang §5.3: \f$S^F\f$ reparameterized by \f$r^{E,F} = (r^{F,E})^{-1}\f$).
+  \tparam FT the number type of the jets
+  \tparam K the maximal order of the jets (`MaxOrder` of `Taylor_jet`)
   \throws Invalid_input if the Jacobian of \f$R\f$ at \f$p\f$ is singular
+  \param rx the jet of the first component of \f$R\f$
+  \param ry the jet of the second component of \f$R\f$
+  \returns the jets \f$(Q_u, Q_v)\f$
 */
 template <class FT, int K>
 std::array<Taylor_jet<FT, K>, 2> inverse_map_jet(const Taylor_jet<FT, K>& rx,

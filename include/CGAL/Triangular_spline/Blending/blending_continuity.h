@@ -32,12 +32,12 @@ struct Blending_continuity {
   int order = 0;          ///< the blending order \f$d\f$
   int measured_order = 0; ///< derivatives measured up to this order: \f$\min(d, 6)\f$
   /// [k]: across interior edges, in the edge frame \f$\mathcal{F}^E\f$: the two faces'
-  /// surfaces reparameterized by \f$r^{E,F} = (r^{F,E})^{-1}\f$ (Thm. 5.1)
+  /// surfaces reparameterized by \f$r^{E,F} = (r^{F,E})^{-1}\f$ (Thm.\ 5.1)
   std::vector<double> max_edge_jump;
   /// [k]: at the vertices, in the vertex frame \f$\mathcal{F}^V\f$: each incident face's
   /// surface composed with \f$A_{F,V}^{-1}\f$ (`face_to_vertex_frame()`) against the vertex
   /// surface \f$S^V\f$ — the face's corner jet (two-zero limit) and its one-sided limits
-  /// along both sides (the sub-surfaces there) all count (Thms. 6.1, 6.2)
+  /// along both sides (the sub-surfaces there) all count (Thms.\ 6.1, 6.2)
   std::vector<double> max_vertex_jump;
   /// [k]: each face's surface on an edge against the edge surface \f$S^E\f$ (inheritance)
   std::vector<double> max_edge_inheritance_error;
@@ -147,7 +147,11 @@ std::array<std::size_t, 2> sides_at_corner(const Mesh_blending_surface<Point_3>&
     agree; for the basic variant only the values (order 0) and the normals do.
 
   Jumps at round-off level mean \f$C^d\f$ continuity in those frames.
+  \tparam Point_3 a CGAL 3D point type (e.g. `Kernel::Point_3`)
   \throws Invalid_input if `samples_per_edge` < 1
+  \param surface the blended surface
+  \param samples_per_edge the number of sample points on each interior edge
+  \returns the measured gaps and interpolation errors
 */
 template <class Point_3>
 Blending_continuity measure_blending_continuity(const Mesh_blending_surface<Point_3>& surface,
@@ -241,7 +245,11 @@ Blending_continuity measure_blending_continuity(const Mesh_blending_surface<Poin
   `Mesh_blending_surface::tessellate()` with `resolution` segments per edge (without
   building the mesh), and measures the curvature gap towards the vertices (see
   `Blending_curvature`).
+  \tparam Point_3 a CGAL 3D point type (e.g. `Kernel::Point_3`)
   \throws Invalid_input if `resolution` < 1
+  \param surface the blended surface
+  \param resolution the number of segments per edge
+  \returns the curvature samples and the gap towards the vertices
 */
 template <class Point_3>
 Blending_curvature measure_blending_curvature(const Mesh_blending_surface<Point_3>& surface,

@@ -212,6 +212,8 @@ std::vector<T> fang_from_powers(const std::vector<T>& w_in, const char* who) {
   \brief returns the inherited terms \f$q^p\f$ (Fang, Def. 3.2): the number of indicators
   whose value is zero.
   \tparam T a number type or a `Taylor_jet` (its value is tested)
+  \param indicators the values of the indicators
+  \returns the inherited terms \f$q^p\f$ (Fang, Def. 3.2)
 */
 template <class T>
 int inherited_terms(const std::vector<T>& indicators) {
@@ -238,6 +240,7 @@ int inherited_terms(const std::vector<T>& indicators) {
   \param v the values \f$v_0, \dots, v_{n-1}\f$, \f$n \ge 2\f$
   \param order the blending order \f$d \ge 0\f$
   \throws Invalid_input if \f$d < 0\f$, \f$n < 2\f$, or a denominator vanishes
+  \returns the intermediate functions \f$g_i^{n,d}(v)\f$ of Fang's Def. 3.3, by the formula itself
 */
 template <class T>
 std::vector<T> intermediate_functions(const std::vector<T>& v, int order) {
@@ -307,6 +310,8 @@ std::vector<T> intermediate_functions(const std::vector<T>& v, int order) {
   \param order the blending order \f$d \ge 0\f$
   \throws Invalid_input if \f$d < 0\f$, \f$n = 0\f$, more than two indicators vanish, two
   non-zero indicators violate Def. 3.1, or (floating point) the denominator underflows
+  \returns Fang's blending functions \f$f_i^{n,d,p}\f$ (Def. 3.4) at a point, given the values
+  \f$p_i\f$ of the inheritance indicators there, with the limits where indicators vanish
 */
 template <class T>
 std::vector<T> blending_functions(const std::vector<T>& indicators, int order) {
@@ -324,6 +329,9 @@ std::vector<T> blending_functions(const std::vector<T>& indicators, int order) {
   For indicators whose power is smoother than the indicator itself: a Euclidean distance
   \f$p = \sqrt{q}\f$ has \f$p^{d+1} = q^{(d+1)/2}\f$, a polynomial when \f$d\f$ is odd, whose
   jet exists where \f$p = 0\f$ (Fang, eq. 7.8).
+  \tparam T a number type or a `Taylor_jet`
+  \param powers the powers of the indicators
+  \returns Fang's blending functions from the powers \f$w_i = p_i^{d+1}\f$ instead of the indicators
 */
 template <class T>
 std::vector<T> blending_functions_of_powers(const std::vector<T>& powers) {
@@ -341,7 +349,12 @@ std::vector<T> blending_functions_of_powers(const std::vector<T>& powers) {
   \f$d = 1\f$ Hagen and Pottmann's (eq. 2.9). They inherit derivatives up to order \f$d\f$
   where one indicator vanishes, like Fang's, but are undefined where two vanish (the
   corners of a triangle): there all terms of the denominator vanish.
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input if \f$d < 0\f$, \f$n = 0\f$ or two or more indicators vanish
+  \param indicators the values of the indicators
+  \param order the order
+  \returns the extended Nielson blending functions (Fang, eq. 9.1, "special side blending
+  functions")
 */
 template <class T>
 std::vector<T> extended_nielson_functions(const std::vector<T>& indicators, int order) {
@@ -374,7 +387,12 @@ std::vector<T> extended_nielson_functions(const std::vector<T>& indicators, int 
   \ingroup PkgTriangularSplineBlending
   \brief returns Nielson's blending functions (Fang, Def. 2.3):
   \f$f_0 = vw/(uv + vw + wu)\f$ and cyclically; undefined at the corners.
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input at a corner (two of \f$u, v, w\f$ zero)
+  \param u the first indicator
+  \param v the second indicator
+  \param w the third indicator
+  \returns Nielson's blending functions (Fang, Def. 2.3)
 */
 template <class T>
 std::array<T, 3> nielson_functions(const T& u, const T& v, const T& w) {
@@ -386,7 +404,12 @@ std::array<T, 3> nielson_functions(const T& u, const T& v, const T& w) {
   \ingroup PkgTriangularSplineBlending
   \brief returns Hagen and Pottmann's blending functions (Fang, eq. 2.9):
   \f$f_0 = v^2w^2/(u^2v^2 + v^2w^2 + w^2u^2)\f$ and cyclically; undefined at the corners.
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input at a corner
+  \param u the first indicator
+  \param v the second indicator
+  \param w the third indicator
+  \returns Hagen and Pottmann's blending functions (Fang, eq. 2.9)
 */
 template <class T>
 std::array<T, 3> hagen_pottmann_functions(const T& u, const T& v, const T& w) {
@@ -403,7 +426,11 @@ std::array<T, 3> hagen_pottmann_functions(const T& u, const T& v, const T& w) {
   Where no indicator vanishes they are computed from the reciprocals, an independent
   formula; they equal `extended_nielson_functions()` (multiply numerator and denominator
   by \f$\prod w\f$), which the tests check exactly.
+  \tparam T a number type or a `Taylor_jet`
   \throws Invalid_input if \f$d < 0\f$, \f$n = 0\f$ or two or more indicators vanish
+  \param indicators the values of the indicators
+  \param order the order
+  \returns Shepard's functions (Fang, eq. 9.2)
 */
 template <class T>
 std::vector<T> shepard_functions(const std::vector<T>& indicators, int order) {
@@ -440,14 +467,23 @@ std::vector<T> shepard_functions(const std::vector<T>& indicators, int order) {
 */
 struct Fang_blending_functions {
   /// returns the name of the policy, `"fang"`.
+  /// \returns the name of the policy, `"fang"`
   static const char* name() { return "fang"; }
   /// returns the blending functions of order `order` of `indicators` (`blending_functions()`).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param indicators the values of the indicators
+  /// \param order the order
+  /// \returns the blending functions of order `order` of `indicators` (`blending_functions()`)
   template <class T>
   std::vector<T> operator()(const std::vector<T>& indicators, int order) const {
     return blending_functions(indicators, order);
   }
   /// returns the blending functions of indicators given as powers
   /// (`blending_functions_of_powers()`).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param powers the powers of the indicators
+  /// \returns the blending functions of indicators given as powers
+  /// (`blending_functions_of_powers()`)
   template <class T>
   std::vector<T> of_powers(const std::vector<T>& powers) const {
     return blending_functions_of_powers(powers);
@@ -461,8 +497,13 @@ struct Fang_blending_functions {
 */
 struct Extended_nielson_blending_functions {
   /// returns the name of the policy, `"extended-nielson"`.
+  /// \returns the name of the policy, `"extended-nielson"`
   static const char* name() { return "extended-nielson"; }
   /// returns the extended Nielson functions of order `order` of `indicators`.
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param indicators the values of the indicators
+  /// \param order the order
+  /// \returns the extended Nielson functions of order `order` of `indicators`
   template <class T>
   std::vector<T> operator()(const std::vector<T>& indicators, int order) const {
     return extended_nielson_functions(indicators, order);
@@ -475,8 +516,13 @@ struct Extended_nielson_blending_functions {
 */
 struct Shepard_blending_functions {
   /// returns the name of the policy, `"shepard"`.
+  /// \returns the name of the policy, `"shepard"`
   static const char* name() { return "shepard"; }
   /// returns Shepard's functions of order `order` of `indicators`.
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param indicators the values of the indicators
+  /// \param order the order
+  /// \returns Shepard's functions of order `order` of `indicators`
   template <class T>
   std::vector<T> operator()(const std::vector<T>& indicators, int order) const {
     return shepard_functions(indicators, order);

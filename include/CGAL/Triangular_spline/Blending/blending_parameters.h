@@ -113,6 +113,8 @@ CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(least_interpolant_tolerance, double)
       \cgalParamDefault{`1e-10`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
+  \returns the `Mesh_blending_options` set by the named parameters `np`, the defaults of
+  `Mesh_blending_options` for those not given
 */
 template <class CGAL_NP_TEMPLATE_PARAMETERS>
 Mesh_blending_options blending_options(const CGAL_NP_CLASS& np = parameters::default_values()) {
@@ -169,6 +171,7 @@ Mesh_blending_options blending_options(const CGAL_NP_CLASS& np = parameters::def
 
   \throws Invalid_input as the constructor of `Mesh_blending_surface` (invalid options or
   mesh, bad normals)
+  \returns the blended surface
 */
 template <class Point_3, class CGAL_NP_TEMPLATE_PARAMETERS>
 Mesh_blending_surface<Point_3>

@@ -60,6 +60,11 @@ Value weighted_sum(const std::vector<T>& f, const std::vector<Value>& values) {
   \tparam T a number type or a `Taylor_jet` (then the result carries the derivatives)
   \tparam Value `T` or `std::array<T, D>` (a point or vector in \f$\mathbb{R}^D\f$)
   \tparam BlendingFunctions a blending-function policy, e.g. `Fang_blending_functions`
+  \param indicators the indicator values at the point
+  \param values the sub-function values \f$S_i\f$ at the point, one per indicator
+  \param order the order
+  \param functions the blending functions
+  \returns the blended value \f$S\f$
 */
 template <class T, class Value, class BlendingFunctions = Fang_blending_functions>
 Value blend_values(const std::vector<T>& indicators, const std::vector<Value>& values, int order,
@@ -98,28 +103,49 @@ public:
 
   /// creates the scheme of order `order`.
   /// \throws Invalid_input if `order` < 0
+  /// \param order the order
+  /// \param functions the blending functions
   explicit Triangular_blending_scheme(int order, const BlendingFunctions& functions = {})
       : m_order(order), m_functions(functions) {
     internal::check_order(order, "Triangular_blending_scheme");
   }
 
   /// returns the blending order \f$d\f$.
+  /// \returns the blending order \f$d\f$
   int order() const { return m_order; }
 
-  /// returns the indicators \f$(u, v, 1 - u - v)\f$ (Def. 4.2).
+  /// returns the indicators \f$(u, v, 1 - u - v)\f$ (Def.\ 4.2).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param u the first parameter \f$u\f$
+  /// \param v the second parameter \f$v\f$
+  /// \returns the indicators
   template <class T>
   std::vector<T> indicators(const T& u, const T& v) const {
     const T w = FT(1) - u - v;
     return {u, v, w};
   }
 
-  /// returns the blending functions \f$f_0, f_1, f_2\f$ at \f$(u, v)\f$ (Def. 4.3).
+  /// returns the blending functions \f$f_0, f_1, f_2\f$ at \f$(u, v)\f$ (Def.\ 4.3).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param u the first parameter \f$u\f$
+  /// \param v the second parameter \f$v\f$
+  /// \returns the blending functions \f$f_0, f_1, f_2\f$ at \f$(u, v)\f$ (Def. 4.3)
   template <class T>
   std::vector<T> weights(const T& u, const T& v) const {
     return m_functions(indicators(u, v), m_order);
   }
 
-  /// returns \f$\sum_i f_i(u,v)\, S_i(u,v)\f$ (Def. 4.6).
+  /// returns \f$\sum_i f_i(u,v)\, S_i(u,v)\f$ (Def.\ 4.6).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \tparam S0 a callable `s(u, v)`
+  /// \tparam S1 a callable `s(u, v)`
+  /// \tparam S2 a callable `s(u, v)`
+  /// \param u the first parameter \f$u\f$
+  /// \param v the second parameter \f$v\f$
+  /// \param s0 the callable of the first sub-surface \f$S_0\f$
+  /// \param s1 the callable of the second sub-surface \f$S_1\f$
+  /// \param s2 the callable of the third sub-surface \f$S_2\f$
+  /// \returns the blended value
   template <class T, class S0, class S1, class S2>
   auto blend(const T& u, const T& v, const S0& s0, const S1& s1, const S2& s2) const {
     using Value = std::decay_t<decltype(s0(u, v))>;
@@ -142,6 +168,8 @@ private:
   With \f$n = 2\f$, Def. 3.4 reduces to
   \f$f_0 = (1-y)^{d+1} / (y^{d+1} + (1-y)^{d+1})\f$, \f$f_1 = 1 - f_0\f$.
   Sub-surfaces are callables as in `Triangular_blending_scheme`.
+  \tparam FT a number type
+  \tparam BlendingFunctions a blending-function policy, e.g. `Fang_blending_functions`
 */
 template <class FT, class BlendingFunctions = Fang_blending_functions>
 class Binary_blending_scheme {
@@ -153,15 +181,21 @@ public:
 
   /// creates the scheme of order `order`.
   /// \throws Invalid_input if `order` < 0
+  /// \param order the order
+  /// \param functions the blending functions
   explicit Binary_blending_scheme(int order, const BlendingFunctions& functions = {})
       : m_order(order), m_functions(functions) {
     internal::check_order(order, "Binary_blending_scheme");
   }
 
   /// returns the blending order \f$d\f$.
+  /// \returns the blending order \f$d\f$
   int order() const { return m_order; }
 
-  /// returns the indicators \f$(y, 1 - y)\f$ (eq. 5.7); `x` is not used.
+  /// returns the indicators \f$(y, 1 - y)\f$ (eq.\ 5.7); `x` is not used.
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param y the \f$y\f$ coordinate
+  /// \returns the indicators
   template <class T>
   std::vector<T> indicators(const T& /* x */, const T& y) const {
     const T other = FT(1) - y;
@@ -169,12 +203,24 @@ public:
   }
 
   /// returns \f$f_0, f_1\f$ at \f$(x, y)\f$.
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param x the \f$x\f$ coordinate
+  /// \param y the \f$y\f$ coordinate
+  /// \returns \f$f_0, f_1\f$ at \f$(x, y)\f$
   template <class T>
   std::vector<T> weights(const T& x, const T& y) const {
     return m_functions(indicators(x, y), m_order);
   }
 
-  /// returns \f$f_0 S_0 + f_1 S_1\f$ at \f$(x, y)\f$ (eq. 5.6).
+  /// returns \f$f_0 S_0 + f_1 S_1\f$ at \f$(x, y)\f$ (eq.\ 5.6).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \tparam S0 a callable `s(u, v)`
+  /// \tparam S1 a callable `s(u, v)`
+  /// \param x the \f$x\f$ coordinate
+  /// \param y the \f$y\f$ coordinate
+  /// \param s0 the callable of the first sub-surface \f$S_0\f$
+  /// \param s1 the callable of the second sub-surface \f$S_1\f$
+  /// \returns the blended value
   template <class T, class S0, class S1>
   auto blend(const T& x, const T& y, const S0& s0, const S1& s1) const {
     using Value = std::decay_t<decltype(s0(x, y))>;
@@ -192,11 +238,11 @@ private:
   \brief how `Multi_sided_blending_scheme` measures the distance to a side.
 */
 enum class Side_distance {
-  /// the Euclidean distance to the side's line (Fang, Def. 7.2); needs a square root of
+  /// the Euclidean distance to the side's line (Fang, Def.\ 7.2); needs a square root of
   /// each side length, taken with `CGAL::approximate_sqrt()` (exact for `double`)
   EUCLIDEAN,
   /// the Euclidean distance times the side length (a 2x2 determinant): rational, so exact
-  /// with an exact number type; same zero sets, hence the same inheritance (Thm. 7.1), but
+  /// with an exact number type; same zero sets, hence the same inheritance (Thm.\ 7.1), but
   /// different blending functions when the sides have different lengths
   SCALED
 };
@@ -233,6 +279,10 @@ public:
     strictly convex and counter-clockwise (three consecutive corners collinear or turning
     clockwise, or the boundary winding more than once) — the non-convex faces of Fang
     §9.1.4
+    \param polygon the corners of the convex polygon, counter-clockwise
+    \param order the order
+    \param distance the distance to the side lines used as indicators
+    \param functions the blending functions
   */
   Multi_sided_blending_scheme(std::vector<Point_2> polygon, int order,
                               Side_distance distance = Side_distance::EUCLIDEAN,
@@ -261,14 +311,21 @@ public:
   }
 
   /// returns the number of sides \f$n\f$.
+  /// \returns the number of sides \f$n\f$
   std::size_t number_of_sub_surfaces() const { return m_polygon.size(); }
   /// returns the polygon.
+  /// \returns the polygon
   const std::vector<Point_2>& polygon() const { return m_polygon; }
   /// returns the blending order \f$d\f$.
+  /// \returns the blending order \f$d\f$
   int order() const { return m_order; }
 
   /// returns the indicators \f$m_0, \dots, m_{n-1}\f$ at \f$(x, y)\f$: the signed distances to
   /// the side lines, positive inside.
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param x the \f$x\f$ coordinate
+  /// \param y the \f$y\f$ coordinate
+  /// \returns the indicators
   template <class T>
   std::vector<T> indicators(const T& x, const T& y) const {
     std::vector<T> m;
@@ -281,13 +338,23 @@ public:
   }
 
   /// returns the blending functions \f$f_i^{n,d,m}\f$ at \f$(x, y)\f$.
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param x the \f$x\f$ coordinate
+  /// \param y the \f$y\f$ coordinate
+  /// \returns the blending functions \f$f_i^{n,d,m}\f$ at \f$(x, y)\f$
   template <class T>
   std::vector<T> weights(const T& x, const T& y) const {
     return m_functions(indicators(x, y), m_order);
   }
 
-  /// returns \f$\sum_i f_i S_i\f$ at \f$(x, y)\f$ (eq. 7.1); `sub_surfaces` is a container of
-  /// \f$n\f$ callables `s(x, y)` of one type (e.g. `std::function`).
+  /// returns \f$\sum_i f_i S_i\f$ at \f$(x, y)\f$ (eq.\ 7.1); `sub_surfaces` is a container of
+  /// \f$n\f$ callables `s(x, y)` of one type (e.g.\ `std::function`).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \tparam Container a container of callables `s(x, y)`
+  /// \param x the \f$x\f$ coordinate
+  /// \param y the \f$y\f$ coordinate
+  /// \param sub_surfaces the \f$n\f$ sub-surfaces, callables `s(x, y)`
+  /// \returns the blended value
   template <class T, class Container>
   auto blend(const T& x, const T& y, const Container& sub_surfaces) const {
     using Value = std::decay_t<decltype((*sub_surfaces.begin())(x, y))>;
@@ -299,6 +366,8 @@ public:
 
   /// throws `Invalid_input` (prefixed by `who`) unless `polygon` is strictly convex and
   /// counter-clockwise; exact with exact predicates or an exact `FT`.
+  /// \param polygon the corners of the polygon
+  /// \param who the prefix of the error message
   static void check_strictly_convex(const std::vector<Point_2>& polygon, const std::string& who) {
     const std::size_t n = polygon.size();
     for (std::size_t i = 0; i < n; ++i) {

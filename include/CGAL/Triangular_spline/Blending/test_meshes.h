@@ -178,6 +178,9 @@ inline Blending_mesh_data torus_data(double R, double r, std::size_t nu, std::si
   nor the random generators: those here are documented choices.
 
   \throws Invalid_input for an unknown name
+  \param name the name of the test mesh
+  \param seed the seed of the random generator
+  \returns the test mesh `name` of Fang's ch. 8 (and §8.1) as arrays
 */
 inline Blending_mesh_data blending_test_mesh_data(const std::string& name, unsigned seed = 1) {
   using internal::normalized3;
@@ -342,6 +345,7 @@ inline Blending_mesh_data blending_test_mesh_data(const std::string& name, unsig
 /*!
   \ingroup PkgTriangularSplineBlending
   \brief returns the names accepted by `blending_test_mesh()`.
+  \returns the names accepted by `blending_test_mesh()`
 */
 inline std::vector<std::string> blending_test_mesh_names() {
   return {"franke4", "franke8",    "icosahedron",  "pentakis", "ellipsoid",  "perturbed",
@@ -352,8 +356,11 @@ inline std::vector<std::string> blending_test_mesh_names() {
   \ingroup PkgTriangularSplineBlending
   \brief converts mesh arrays to a `CGAL::Surface_mesh` with the normals (if any) in the
   vertex property map `"v:normal"`.
+  \tparam Point_3 a CGAL 3D point type (e.g. `Kernel::Point_3`)
   \throws Invalid_input if a face refers to a missing vertex or `Surface_mesh` rejects a
   face (non-manifold or inconsistently oriented input)
+  \param data the vertices, faces and optional normals of the mesh
+  \returns the surface mesh
 */
 template <class Point_3>
 CGAL::Surface_mesh<Point_3> to_surface_mesh(const Blending_mesh_data& data) {
@@ -389,6 +396,11 @@ CGAL::Surface_mesh<Point_3> to_surface_mesh(const Blending_mesh_data& data) {
   \ingroup PkgTriangularSplineBlending
   \brief returns the test mesh `name` (see `blending_test_mesh_data()`) as a
   `CGAL::Surface_mesh` with its normals in `"v:normal"` (none for `perturbed`).
+  \tparam Point_3 a CGAL 3D point type (e.g. `Kernel::Point_3`)
+  \param name the name of the test mesh
+  \param seed the seed of the random generator
+  \returns the test mesh `name` (see `blending_test_mesh_data()`) as a `CGAL::Surface_mesh` with its
+  normals in `"v:normal"` (none for `perturbed`)
 */
 template <class Point_3>
 CGAL::Surface_mesh<Point_3> blending_test_mesh(const std::string& name, unsigned seed = 1) {

@@ -30,14 +30,19 @@ namespace Triangular_spline {
 class Bivariate_polynomial {
 public:
   /// creates the zero polynomial of degree at most `degree`.
+  /// \param degree the degree
   explicit Bivariate_polynomial(int degree = 0) : m_degree((std::max)(degree, 0)) {
     m_c.assign(static_cast<std::size_t>((m_degree + 1) * (m_degree + 2) / 2), 0.0);
   }
 
   /// returns the degree bound.
+  /// \returns the degree bound
   int degree() const { return m_degree; }
 
   /// returns \f$c_{h,k}\f$ (zero outside the degree bound).
+  /// \param h the exponent \f$h\f$ of \f$x\f$
+  /// \param k the exponent \f$k\f$ of \f$y\f$
+  /// \returns \f$c_{h,k}\f$ (zero outside the degree bound)
   double coefficient(int h, int k) const {
     if (h < 0 || k < 0 || h + k > m_degree)
       return 0;
@@ -45,6 +50,9 @@ public:
   }
 
   /// sets \f$c_{h,k}\f$, \f$h + k \le\f$ `degree()`.
+  /// \param h the exponent \f$h\f$ of \f$x\f$
+  /// \param k the exponent \f$k\f$ of \f$y\f$
+  /// \param c the new coefficient
   void set_coefficient(int h, int k, double c) {
     if (h < 0 || k < 0 || h + k > m_degree)
       throw Invalid_input("Bivariate_polynomial: no monomial x^" + std::to_string(h) + " y^" +
@@ -53,6 +61,10 @@ public:
   }
 
   /// returns \f$P(x, y)\f$ (nested Horner scheme).
+  /// \tparam T a number type or a `Taylor_jet`
+  /// \param x the \f$x\f$ coordinate
+  /// \param y the \f$y\f$ coordinate
+  /// \returns the value \f$P(x, y)\f$
   template <class T>
   T operator()(const T& x, const T& y) const {
     T result = x * 0.0;
@@ -165,6 +177,7 @@ inline double apply(const Interpolation_condition& c, const Bivariate_polynomial
   points, at most one value per point)
   \param tolerance relative threshold for the rank decisions
   \throws Invalid_input if the conditions are dependent (they do not determine an interpolant)
+  \returns de Boor and Ron's least interpolant
 */
 inline Bivariate_polynomial
 least_interpolant(const std::vector<Interpolation_condition>& conditions,
@@ -257,6 +270,10 @@ least_interpolant(const std::vector<Interpolation_condition>& conditions,
 
   \throws Invalid_input if `degree` < 0 or the exact conditions are inconsistent or
   dependent for this degree
+  \param exact the conditions to meet exactly
+  \param fitted the conditions to meet in the least-squares sense
+  \param degree the largest degree of the polynomial
+  \returns the fitted polynomial
 */
 inline Bivariate_polynomial
 least_squares_polynomial(const std::vector<Interpolation_condition>& exact,

@@ -117,6 +117,7 @@ public:
   /// @{
 
   /// builds the bucket grid of `domain` (see the class description for the cost).
+  /// \param domain the triangulated planar domain
   explicit Domain_locator(const Domain& domain) : m_domain(domain) { build(); }
 
   /// a locator over a temporary domain would dangle.
@@ -128,6 +129,8 @@ public:
 
   /// returns the triangle containing `p` and the barycentric coordinates of `p` in it, or
   /// `std::nullopt` if `p` is outside the domain (including holes) or not finite.
+  /// \param p the query point
+  /// \returns the location of `p`, or `std::nullopt`
   std::optional<Location> locate(const Point_2& p) const {
     if (!CGAL::is_finite(p.x()) || !CGAL::is_finite(p.y()))
       return std::nullopt;
@@ -147,6 +150,8 @@ public:
   /// returns the location of `p` as `locate()` does, or, for a point outside the domain by
   /// at most the snapping tolerance (see the class description), the location of its
   /// nearest boundary point; `std::nullopt` otherwise.
+  /// \param p the query point
+  /// \returns the location, or `std::nullopt`
   std::optional<Location> locate_snapped(const Point_2& p) const {
     std::optional<Location> location = locate(p);
     if (location || !CGAL::is_finite(p.x()) || !CGAL::is_finite(p.y()))
@@ -181,6 +186,8 @@ public:
   /// the search visits rings of buckets around `p` and stops once no closer edge can lie
   /// in the next ring (\f$O(1)\f$ expected near the domain, \f$O(B)\f$ for far away
   /// points or very uneven boundaries, \f$B\f$ the number of boundary edges).
+  /// \param p the query point
+  /// \returns the nearest boundary point, or `std::nullopt`
   std::optional<Boundary_point> nearest_boundary_point(const Point_2& p) const {
     std::optional<Boundary_point> best;
     if (!CGAL::is_finite(p.x()) || !CGAL::is_finite(p.y()) || m_boundary.offsets.empty())
@@ -224,13 +231,18 @@ public:
   }
 
   /// returns `true` iff `p` lies in the closed domain.
+  /// \param p the query point
+  /// \returns `true` iff `p` lies in the closed domain
   bool contains(const Point_2& p) const { return locate(p).has_value(); }
 
   /// returns the domain.
+  /// \returns the domain
   const Domain& domain() const { return m_domain; }
   /// returns the number of buckets of the grid.
+  /// \returns the number of buckets of the grid
   std::size_t number_of_buckets() const { return m_nx * m_ny; }
   /// returns the number of (bucket, triangle) registrations.
+  /// \returns the number of (bucket, triangle) registrations
   std::size_t number_of_entries() const { return m_entries.size(); }
   /// @}
 

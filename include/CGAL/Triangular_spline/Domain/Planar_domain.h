@@ -73,6 +73,9 @@ public:
   /// \param check_overlaps `false` skips the global overlap test (for triangulations known to
   /// be embedded, such as the faces of a CGAL triangulation)
   /// \throws Invalid_input if the triangulation violates one of the rules above
+  /// \param points the vertex positions
+  /// \param triangles the triangles, as triples of indices into `points`
+  /// \param traits the geometric traits
   Planar_domain(std::vector<Point_2> points, std::vector<std::array<Index, 3>> triangles,
                 const Geom_traits& traits = Geom_traits(), bool check_overlaps = true)
       : m_points(std::move(points)), m_faces(std::move(triangles)), m_traits(traits) {
@@ -87,25 +90,35 @@ public:
   /// @{
 
   /// returns the number of vertices.
+  /// \returns the number of vertices
   std::size_t number_of_vertices() const { return m_points.size(); }
   /// returns the number of faces.
+  /// \returns the number of faces
   std::size_t number_of_faces() const { return m_faces.size(); }
   /// returns the number of edges.
+  /// \returns the number of edges
   std::size_t number_of_edges() const { return m_edges.size(); }
   /// returns the number of edges with two incident faces
+  /// \returns the number of edges with two incident faces
   std::size_t number_of_interior_edges() const { return m_edges.size() - m_boundary_edges; }
   /// returns the number of edges with one incident face
+  /// \returns the number of edges with one incident face
   std::size_t number_of_boundary_edges() const { return m_boundary_edges; }
   /// returns the number of vertices on the boundary
+  /// \returns the number of vertices on the boundary
   std::size_t number_of_boundary_vertices() const { return m_boundary_vertices; }
   /// returns the number of vertices not on the boundary
+  /// \returns the number of vertices not on the boundary
   std::size_t number_of_interior_vertices() const { return m_points.size() - m_boundary_vertices; }
   /// returns the number of connected components (through shared edges)
+  /// \returns the number of connected components (through shared edges)
   std::size_t number_of_components() const { return m_components; }
   /// returns the number of closed boundary curves (outer boundaries and holes)
+  /// \returns the number of closed boundary curves (outer boundaries and holes)
   std::size_t number_of_boundary_loops() const { return m_boundary_loops; }
   /// returns `true` iff the domain is a topological disk: connected, one boundary curve,
   /// Euler characteristic 1 (then Morgan and Scott's dimension formula applies).
+  /// \returns `true` iff the domain is a topological disk
   bool is_simply_connected() const {
     const long long chi = static_cast<long long>(number_of_vertices()) -
                           static_cast<long long>(number_of_edges()) +
@@ -118,26 +131,44 @@ public:
   /// @{
 
   /// returns the point of vertex `v`
+  /// \param v the index of a vertex
+  /// \returns the point of vertex `v`
   const Point_2& point(Index v) const { return m_points[v]; }
   /// returns the points of all vertices, indexed by vertex
+  /// \returns the points of all vertices, indexed by vertex
   const std::vector<Point_2>& points() const { return m_points; }
   /// returns the vertices of face `f`, counter-clockwise
+  /// \param f the index of a face
+  /// \returns the vertices of face `f`, counter-clockwise
   const std::array<Index, 3>& face(Index f) const { return m_faces[f]; }
   /// returns the vertices of all faces (each counter-clockwise), indexed by face
+  /// \returns the vertices of all faces (each counter-clockwise), indexed by face
   const std::vector<std::array<Index, 3>>& faces() const { return m_faces; }
   /// returns the two vertices of edge `e`, the smaller index first (the canonical
   /// orientation of the edge's control-point slots)
+  /// \param e the index of an edge
+  /// \returns the two vertices of `e`, the smaller index first
   const std::array<Index, 2>& edge(Index e) const { return m_edges[e]; }
   /// returns the faces on the left and on the right of edge `e` oriented from
   /// `edge(e)[0]` to `edge(e)[1]`; `null_index` where there is none
+  /// \param e the index of an edge
+  /// \returns the left and right faces of `e`, `null_index` where there is none
   const std::array<Index, 2>& edge_faces(Index e) const { return m_edge_faces[e]; }
   /// returns `true` iff edge `e` has only one incident face
+  /// \param e the index of an edge
+  /// \returns `true` iff edge `e` has only one incident face
   bool is_boundary_edge(Index e) const {
     return m_edge_faces[e][0] == null_index || m_edge_faces[e][1] == null_index;
   }
   /// returns edge `i` of face `f`: the edge opposite `face(f)[i]`
+  /// \param f the index of a face
+  /// \param i the position, 0..2, of the vertex of `f` opposite the edge
+  /// \returns edge `i` of face `f`
   Index face_edge(Index f, int i) const { return m_face_edges[f][static_cast<std::size_t>(i)]; }
   /// returns the vertex of face `f` opposite its edge `e`
+  /// \param f the index of a face
+  /// \param e the index of an edge
+  /// \returns the vertex of face `f` opposite its edge `e`
   Index opposite_vertex(Index f, Index e) const {
     for (int i = 0; i < 3; ++i)
       if (m_face_edges[f][static_cast<std::size_t>(i)] == e)
@@ -145,26 +176,37 @@ public:
     return null_index;
   }
   /// returns `true` iff vertex `v` is on the boundary
+  /// \param v the index of a vertex
+  /// \returns `true` iff vertex `v` is on the boundary
   bool is_boundary_vertex(Index v) const { return m_vertex_boundary[v] != 0; }
   /// returns the neighbours of `v` in counter-clockwise order; for a boundary vertex the
   /// first and the last are on the boundary, and there is one more neighbour than faces
+  /// \param v the index of a vertex
+  /// \returns the range `[begin, end)` of the neighbours of `v`
   std::pair<const Index*, const Index*> neighbours(Index v) const {
     return {m_star_neighbours.data() + m_neighbour_offsets[v],
             m_star_neighbours.data() + m_neighbour_offsets[v + 1]};
   }
   /// returns the number of neighbours of `v`
+  /// \param v the index of a vertex
+  /// \returns the number of neighbours of `v`
   std::size_t degree(Index v) const { return m_neighbour_offsets[v + 1] - m_neighbour_offsets[v]; }
   /// returns the faces around `v` counter-clockwise: face `i` is
   /// (`v`, neighbour `i`, neighbour `i+1` mod degree)
+  /// \param v the index of a vertex
+  /// \returns the range `[begin, end)` of the faces around `v`
   std::pair<const Index*, const Index*> star_faces(Index v) const {
     return {m_star_faces.data() + m_face_offsets[v], m_star_faces.data() + m_face_offsets[v + 1]};
   }
   /// returns the edges around `v` in the order of `neighbours(v)`
+  /// \param v the index of a vertex
+  /// \returns the edges around `v` in the order of `neighbours(v)`
   std::pair<const Index*, const Index*> star_edges(Index v) const {
     return {m_star_edges.data() + m_neighbour_offsets[v],
             m_star_edges.data() + m_neighbour_offsets[v + 1]};
   }
   /// returns the kernel instance
+  /// \returns the kernel instance
   const Geom_traits& geom_traits() const { return m_traits; }
   /// @}
 
@@ -534,6 +576,11 @@ private:
   \ingroup PkgTriangularSplineSplines
   \brief returns `domain` with its points converted to the kernel `K2` (exact when `K2` is
   exact: the double coordinates are represented exactly).
+  \tparam K2 the target kernel
+  \tparam K1 the source kernel
+  \param domain the domain to convert
+  \returns `domain` with its points converted to the kernel `K2` (exact when `K2` is exact: the
+  double coordinates are represented exactly)
 */
 template <class K2, class K1>
 Planar_domain<K2> convert_domain(const Planar_domain<K1>& domain) {

@@ -35,6 +35,10 @@ namespace Triangular_spline {
   \tparam GeomTraits a model of `DelaunayTriangulationTraits_2` and `Kernel`
   \throws Invalid_input if `points` and `values` differ in size, two points coincide, or all
   points are collinear (data from `read_xyz()` passes these checks)
+  \param data the scattered data
+  \param input_index if not null, receives the index in `data` of the point of each domain vertex
+  \returns the Delaunay triangulation of the data points as a `Planar_domain`, with the data value
+  of each domain vertex
 */
 template <class GeomTraits>
 std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>

@@ -37,8 +37,12 @@ namespace Triangular_spline {
   `vertices(graph)`.
   \tparam FaceGraph a model of `FaceGraph`
   \tparam VertexPointMap a readable property map from vertices to 2D or 3D CGAL points
+  \tparam GeomTraits a model of `Kernel`, the kernel of the domain
   \throws Invalid_input if a face is not a triangle, or the projection violates the
   `Planar_domain` rules (duplicate points, zero-area or folded triangles, non-manifold)
+  \param graph the triangulated face graph
+  \param vpm the vertex point property map of `graph`
+  \returns the domain and the data values
 */
 template <class GeomTraits, class FaceGraph, class VertexPointMap>
 std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
@@ -77,6 +81,10 @@ domain_from_face_graph(const FaceGraph& graph, VertexPointMap vpm) {
 }
 
 /// returns `domain_from_face_graph(graph, get(CGAL::vertex_point, graph))`.
+/// \tparam GeomTraits a model of `Kernel`, the kernel of the domain
+/// \tparam FaceGraph a model of `FaceListGraph`
+/// \param graph the triangulated face graph
+/// \returns the domain and the data values
 template <class GeomTraits, class FaceGraph>
 std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
 domain_from_face_graph(const FaceGraph& graph) {

@@ -48,6 +48,13 @@ struct Lexicographic_hilbert_traits {
   handle of each domain vertex.
   \tparam Triangulation a `CGAL::Triangulation_2` (Delaunay, constrained, ...) whose
   points are `GeomTraits::Point_2`
+  \tparam GeomTraits a model of `Kernel`
+  \tparam InDomain a predicate on the triangulation's face handles
+  \tparam VertexHandles a `std::vector` of the triangulation's vertex handles
+  \param triangulation the CGAL 2D triangulation
+  \param in_domain the predicate on face handles selecting the faces of the domain
+  \param vertex_map receives the triangulation vertex handle of each domain vertex
+  \returns the domain
 */
 template <class GeomTraits, class Triangulation, class InDomain, class VertexHandles>
 Planar_domain<GeomTraits> domain_from_triangulation_2(const Triangulation& triangulation,

@@ -156,6 +156,8 @@ inline void read_mesh_soup(
   exceeds \f$10^{150}\f$; the `Planar_domain` checks (duplicate points, unused vertices,
   zero-area or folded triangles, non-manifold edges or vertices) apply to the projection to
   \f$(x, y)\f$ and their messages are prefixed with the file name.
+  \returns the triangulation of the points \f$(x, y)\f$ as a `Planar_domain` and the height \f$z\f$
+  of each domain vertex
 */
 template <class GeomTraits>
 std::pair<Planar_domain<GeomTraits>, std::vector<typename GeomTraits::FT>>
@@ -217,6 +219,8 @@ read_mesh_domain(const std::string& path) {
   \tparam Point the point type of the mesh (a CGAL 3D point)
   \throws Invalid_input if the extension is not one of the above
   \throws std::runtime_error (naming `path`) if the file cannot be opened or written
+  \param path the file path
+  \param mesh the mesh to write
 */
 template <class Point>
 void write_mesh(const std::string& path, const CGAL::Surface_mesh<Point>& mesh) {

@@ -269,6 +269,8 @@ double nearest_double(const FT& x) {
   \f$10^{150}\f$ (products of two such numbers would overflow a `double`), or if it is non-zero
   with a magnitude below \f$10^{-400}\f$ (a bound on the exact work; it is below every
   `double`). Both kinds of number types accept exactly the same decimal tokens.
+  \param token the token to parse
+  \returns the number
 */
 template <class FT>
 FT parse_number(const std::string& token) {
@@ -287,6 +289,8 @@ FT parse_number(const std::string& token) {
   `double` exactly.
   \tparam FT `double`, or an exact number type with a `CGAL::Fraction_traits`
   decomposition (e.g. `CGAL::Exact_rational`)
+  \param x the number to format
+  \returns the token
 */
 template <class FT>
 std::string format_number(const FT& x) {

@@ -41,6 +41,8 @@ namespace Triangular_spline {
   above \f$10^{150}\f$), and names both lines for two points with the same \f$(x,y)\f$ and different
   heights (or gradients); also thrown if fewer than three distinct points remain or if all points
   are collinear (no triangle can be built).
+  \param with_gradients `true` if each line also holds the gradient `zx zy`
+  \returns the scattered data
 */
 template <class GeomTraits>
 Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& source,
@@ -132,7 +134,11 @@ Scattered_data<GeomTraits> read_xyz(std::istream& input, const std::string& sour
   \brief reads query points, `x y` per line (a third column, as in `.xyz` files, is
   ignored; `#` starts a comment; blank lines are skipped), parsed as `GeomTraits::FT`
   (exactly for exact number types).
+  \tparam GeomTraits a model of `Kernel`
   \throws Invalid_input naming `name` and the line for a malformed line or number
+  \param in the input stream
+  \param name the name used in error messages
+  \returns the query points
 */
 template <class GeomTraits>
 std::vector<typename GeomTraits::Point_2> read_query_points(std::istream& in,

@@ -43,6 +43,9 @@ namespace Triangular_spline {
 template <class GeomTraits, class Value = typename GeomTraits::FT>
 struct Spline_file : Patch_network<GeomTraits, Value> {
   /// takes the domain and the patches (see `Patch_network`) and the file's number type
+  /// \param domain the triangulated planar domain
+  /// \param patches the patches, `patches[f]` being the patch of face `f`
+  /// \param exact `true` if the file declares `number_type exact`
   Spline_file(Planar_domain<GeomTraits> domain,
               std::vector<Bezier_triangle<GeomTraits, Value>> patches, bool exact)
       : Patch_network<GeomTraits, Value>(std::move(domain), std::move(patches)),
@@ -429,6 +432,9 @@ Spline_file<GeomTraits, Value> read_spline_file(std::istream& input, const std::
   \brief returns the `dimension` declared in the header of a spline file (1 or 3), so that a
   caller can choose the `Value` type of `read_spline_file()`; 1 when the header declares
   none (`read_spline_file()` then reports the missing line). The stream is rewound.
+  \param input the input stream
+  \returns the `dimension` declared in the header of a spline file (1 or 3), so that a caller can
+  choose the `Value` type of `read_spline_file()`
 */
 inline int spline_file_dimension(std::istream& input) {
   std::string line;

@@ -42,6 +42,7 @@ struct Join_adjustment {
   /// the largest absolute coordinate of a correction, converted to `double`
   double max_correction = 0;
   /// returns `true` iff some control point was moved
+  /// \returns `true` iff some control point was moved
   bool changed() const { return !first_touched.empty() || !second_touched.empty(); }
 };
 
@@ -56,6 +57,9 @@ struct Join_adjustment {
   of a patch are disjoint if and only if \f$n \ge 4k+1\f$: only then can the conditions
   around each vertex be met independently, and the points the averaging moves for one
   edge lie outside every corner region and off the other edges' conditions.
+  \param k the order of continuity
+  \returns \f$4k+1\f$, the smallest degree for which `adjust_network()` raises a whole network to
+  \f$C^k\f$ (Mann §3.1, Ženíšek)
 */
 constexpr int minimum_degree_for_network_continuity(int k) {
   return 4 * k + 1;
@@ -441,6 +445,7 @@ struct Network_adjustment {
   std::vector<Vertex_adjustment> vertices;
 
   /// returns the number of interior edges across which some control point moved
+  /// \returns the number of interior edges across which some control point moved
   std::size_t number_of_changed_edges() const {
     std::size_t count = 0;
     for (const Edge_adjustment& e : edges)
@@ -448,6 +453,7 @@ struct Network_adjustment {
     return count;
   }
   /// returns the total number of control points moved (a point moved twice counts twice)
+  /// \returns the total number of control points moved (a point moved twice counts twice)
   std::size_t number_of_touched_points() const {
     std::size_t count = 0;
     for (const Edge_adjustment& e : edges)

@@ -36,6 +36,9 @@ namespace Triangular_spline {
   least \f$\lceil n/3\rceil\f$; the blossom of a Taylor polynomial centred at that vertex
   with that many arguments at the vertex depends on derivatives up to order
   \f$n - \lceil n/3\rceil = \lfloor 2n/3 \rfloor\f$ only.
+  \param degree the degree \f$n\f$ of the interpolant
+  \returns \f$\lfloor 2n/3 \rfloor\f$, the highest order of vertex derivatives that Mann's
+  degree-\f$n\f$ interpolant uses (Mann §3)
 */
 constexpr int mann_derivative_order(int degree) {
   return 2 * degree / 3;
@@ -50,6 +53,11 @@ constexpr int mann_derivative_order(int degree) {
 
   This is the form in which `mann_interpolant()` takes vertex data: centred polynomials
   keep the blossoms well conditioned in `double` far from the origin.
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
+  \param f the index of a face
+  \param center the point of expansion \f$c\f$
+  \returns the Taylor polynomial of `f` at `center`, in the local variables \f$(u, v)\f$
 */
 template <class GeomTraits, class Value>
 Polynomial_surface<GeomTraits, Value>
@@ -77,6 +85,12 @@ taylor_polynomial(const Polynomial_surface<GeomTraits, Value>& f,
   \f$u^p v^q\f$ is `derivative(p, q)` \f$/ (p!\, q!)\f$.
   \tparam Derivative a callable `derivative(p, q)` returning
   \f$\partial^{p+q} f / \partial x^p \partial y^q\f$ at the point, as a `Value`
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
+  \param order the order of the Taylor polynomial
+  \param derivative the callable `derivative(p, q)` returning the partial derivatives
+  \returns the Taylor polynomial of order `order` built from partial derivatives, in the local
+  variables centred at the point where they were taken
 */
 template <class GeomTraits, class Value = typename GeomTraits::FT, class Derivative>
 Polynomial_surface<GeomTraits, Value>
@@ -151,6 +165,7 @@ void check_vertex_jets(const Planar_domain<GeomTraits>& domain,
   \param degree the patch degree \f$n \ge 1\f$
   \throws Invalid_input if `jets` does not hold one polynomial per vertex or one has a
   degree outside that range (derivatives missing or too many)
+  \returns Mann's \f$C^0\f$ network of degree `degree` set from vertex data (Mann §3, Fig. 11)
 */
 template <class GeomTraits, class Value>
 std::vector<Bezier_triangle<GeomTraits, Value>>
@@ -210,10 +225,15 @@ mann_c0_network(const Planar_domain<GeomTraits>& domain,
   `f` in `domain().face(f)` order, all of degree `degree()`) and what the continuity
   adjustment moved.
   \cgalModels `TriangularSplineNetwork`
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
 */
 template <class GeomTraits, class Value = typename GeomTraits::FT>
 struct Mann_interpolant : Patch_network<GeomTraits, Value> {
   /// takes the adjusted network, its order and what the adjustment moved
+  /// \param network the spline network
+  /// \param continuity the order \f$k\f$ of continuity reached
+  /// \param adjustment what the adjustment moved
   Mann_interpolant(Patch_network<GeomTraits, Value> network, int continuity,
                    Network_adjustment adjustment)
       : Patch_network<GeomTraits, Value>(std::move(network)), continuity(continuity),
@@ -235,6 +255,8 @@ struct Mann_interpolant : Patch_network<GeomTraits, Value> {
   leaves unchanged. For the default quintic, \f$k = 1\f$: a \f$C^1\f$ interpolant with
   quintic precision, built from derivatives up to order 3 at the vertices.
 
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \param domain the domain triangulation
   \param jets the vertex data, as for `mann_c0_network()`
   \param degree the patch degree \f$n\f$
@@ -242,6 +264,7 @@ struct Mann_interpolant : Patch_network<GeomTraits, Value> {
   allows, \f$\lfloor (n-1)/4 \rfloor\f$
   \param tolerance passed to `adjust_network()` (inexact number types only)
   \throws Invalid_input for bad vertex data (see `mann_c0_network()`), or if \f$n < 4k+1\f$
+  \returns the interpolant
 */
 template <class GeomTraits, class Value>
 Mann_interpolant<GeomTraits, Value>
@@ -297,6 +320,8 @@ mann_interpolant(const Planar_domain<GeomTraits>& domain,
   a constant for fewer), and the higher derivatives are zero
   \throws Invalid_input if `values` does not hold one value per vertex or `order` is out of
   range
+  \returns one Taylor polynomial per vertex in variables centred at the vertex (the form
+  `mann_interpolant()` takes)
 */
 template <class GeomTraits>
 std::vector<Polynomial_surface<GeomTraits>>

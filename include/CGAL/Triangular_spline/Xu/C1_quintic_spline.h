@@ -118,7 +118,7 @@ auto barycentric_weights(const Point_2& x, const Point_2& a, const Point_2& b, c
   are prescribed.
 */
 enum class Corner_frame {
-  /// three star points spread evenly around the vertex (Xu Fig. 4.1): the corner point
+  /// three star points spread evenly around the vertex (Xu Fig.\ 4.1): the corner point
   /// itself is propagated, so the spline approximates the vertex data
   SYMMETRIC_STARS,
   /// the corner point and the two star points whose directions are closest to orthogonal:
@@ -244,26 +244,42 @@ public:
   /// @{
 
   /// returns the domain.
+  /// \returns the domain
   const Domain& domain() const { return m_domain; }
   /// returns the choice of prescribed points in the corner regions.
+  /// \returns the choice of prescribed points in the corner regions
   Corner_frame corner_frame() const { return m_frame; }
   /// returns the number of control-point slots, \f$V + 4E + 6F\f$.
+  /// \returns the number of control-point slots, \f$V + 4E + 6F\f$
   std::size_t number_of_slots() const { return m_values.size(); }
   /// the corner slot of vertex `v`
+  /// \param v the index of a vertex
+  /// \returns the corner slot of `v`
   Slot vertex_slot(Index v) const { return internal::quintic_vertex_slot(m_domain, v); }
   /// slot `t` (0..3) of edge `e` = (lo, hi): \f$f(lo^{4-t} hi^{1+t})\f$
+  /// \param e the index of an edge
+  /// \param t the position along the edge, 0..3
+  /// \returns slot `t` of edge `e`
   Slot edge_slot(Index e, int t) const { return internal::quintic_edge_slot(m_domain, e, t); }
   /// slot `t` (0..5) of face `f` = (a, b, c): t < 3 the corner-inner point at vertex t,
   /// t >= 3 the middle-inner point next to the edge opposite vertex t-3
+  /// \param f the index of a face
+  /// \param t the position in the face, 0..5
+  /// \returns slot `t` of face `f`
   Slot face_slot(Index f, int t) const { return internal::quintic_face_slot(m_domain, f, t); }
 
   /// returns the slot holding \f$b_{i,j,k}\f$ of the patch of face `f` over
   /// (`face(f)[0]`, `face(f)[1]`, `face(f)[2]`)
+  /// \param f the index of a face
+  /// \param index the multi-index of a control point
+  /// \returns the slot of \f$b_{i,j,k}\f$
   Slot slot(Index f, const Multi_index& index) const {
     return internal::quintic_slot(m_domain, f, index);
   }
 
   /// returns the role of slot `s`
+  /// \param s a control-point slot
+  /// \returns the role of slot `s`
   Slot_kind kind(Slot s) const {
     const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
     if (s < V)
@@ -277,6 +293,8 @@ public:
 
   /// returns the polar label of slot `s`: the domain vertices and multiplicities
   /// (summing to 5) of the blossom argument \f$f(u^a v^b w^c)\f$ whose value it holds
+  /// \param s a control-point slot
+  /// \returns the polar label of `s`
   Polar_label polar_label(Slot s) const {
     const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
     if (s < V)
@@ -301,6 +319,8 @@ public:
 
   /// returns the domain point of slot `s` (its polar label averaged): where the control
   /// point sits over the plane in a picture of the control net
+  /// \param s a control-point slot
+  /// \returns the domain point of `s`
   Point_2 domain_point(Slot s) const {
     FT x(0), y(0);
     for (const auto& [v, m] : polar_label(s)) {
@@ -315,23 +335,32 @@ public:
   /// @{
 
   /// returns `true` iff slot `s` is a free parameter (not computed by a rule).
+  /// \param s a control-point slot
+  /// \returns `true` iff slot `s` is a free parameter (not computed by a rule)
   bool is_free(Slot s) const { return m_free[s] != 0; }
   /// returns the free slots in increasing order
+  /// \returns the free slots in increasing order
   const std::vector<Slot>& free_slots() const { return m_free_slots; }
   /// returns the number of free slots.
+  /// \returns the number of free slots
   std::size_t number_of_free_parameters() const { return m_free_slots.size(); }
   /// returns the rules in evaluation order
+  /// \returns the rules in evaluation order
   const std::vector<Rule>& rules() const { return m_rules; }
   /// returns the degenerate frames found in the domain (`find_degenerate_frames()`)
+  /// \returns the degenerate frames found in the domain (`find_degenerate_frames()`)
   const std::vector<Degenerate_frame>& degenerate_frames() const { return m_degenerate.frames; }
   /// returns the edge ends the plan re-routes: one per edge with a degenerate frame, and the
   /// thin frames (`Degenerate_frame_t::thin`), whose regular rule would have weights above
   /// `propagation_weight_bound`
+  /// \returns the re-routed edge ends
   const std::vector<Degenerate_frame>& rerouted_frames() const { return m_frames; }
   /// returns the largest absolute coefficient of any rule: how much the propagation can
   /// amplify a change of a prescribed point (1 for a value copied unchanged)
+  /// \returns the largest absolute rule coefficient
   double max_propagation_weight() const { return m_max_weight; }
   /// returns the interior singular vertices (each adds one free parameter)
+  /// \returns the interior singular vertices (each adds one free parameter)
   const std::vector<Index>& singular_vertices() const { return m_degenerate.singular_vertices; }
   /// @}
 
@@ -339,12 +368,17 @@ public:
   /// @{
 
   /// returns the control value held by slot `s`.
+  /// \param s a control-point slot
+  /// \returns the control value held by slot `s`
   const Value& value(Slot s) const { return m_values[s]; }
   /// returns the control values of all slots, indexed by slot.
+  /// \returns the control values of all slots, indexed by slot
   const std::vector<Value>& values() const { return m_values; }
 
   /// sets the free slot `s` without propagating (use `propagate()` after a batch).
   /// \throws Invalid_input if `s` is not free or `v` is not finite
+  /// \param s a control-point slot
+  /// \param v the new value
   void set_free_value(Slot s, const Value& v) {
     check_free(s, v);
     m_values[s] = v;
@@ -360,6 +394,7 @@ public:
     --rescale`) and returned over the data's own.
     \pre `image` is an affine image of `domain()` (certify the result when unsure)
     \throws Invalid_input if `image` has other vertices or triangles
+    \param image the image of the domain, with the same vertices and triangles in the same order
   */
   void map_domain(Domain image) {
     if (image.number_of_vertices() != m_domain.number_of_vertices() ||
@@ -382,6 +417,8 @@ public:
     sets the free slot `s` to `v` and re-propagates only what depends on it (Xu §4.3:
     corner regions, then edge halves, then flip points, following the plan order).
     \return the slots whose value was recomputed, `s` first
+    \param s a control-point slot
+    \param v the new value
   */
   std::vector<Slot> edit(Slot s, const Value& v) {
     return edit(std::vector<std::pair<Slot, Value>>{{s, v}});
@@ -390,6 +427,8 @@ public:
   /// sets several free slots and re-propagates what depends on any of them, each
   /// dependent slot once, in plan order (corners, edges, flips); returns the edited and
   /// recomputed slots.
+  /// \param changes the pairs (free slot, new value)
+  /// \returns the edited and recomputed slots
   std::vector<Slot> edit(const std::vector<std::pair<Slot, Value>>& changes) {
     if (m_dependent_offsets.empty())
       build_dependents();
@@ -424,9 +463,12 @@ public:
   }
 
   /// returns 5, the degree of the patches.
+  /// \returns 5, the degree of the patches
   int degree() const { return 5; }
 
   /// returns the quintic patch of face `f` over (`face(f)[0]`, `face(f)[1]`, `face(f)[2]`).
+  /// \param f the index of a face
+  /// \returns the quintic patch of face `f` over (`face(f)[0]`, `face(f)[1]`, `face(f)[2]`)
   Patch patch(Index f) const {
     std::vector<Value> net;
     net.reserve(21);

@@ -26,6 +26,10 @@ namespace Triangular_spline {
   \brief returns Xu's free-parameter count \f$3V + 3F + E_I + 3E_B + \sigma\f$ of the
   quintic C^1 scheme with re-routed degenerate frames (\f$\sigma\f$: interior singular
   vertices).
+  \tparam GeomTraits a model of `Kernel`
+  \param domain the triangulated planar domain
+  \returns Xu's free-parameter count \f$3V + 3F + E_I + 3E_B + \sigma\f$ of the quintic C^1 scheme
+  with re-routed degenerate frames (\f$\sigma\f$: interior singular vertices)
 */
 template <class GeomTraits>
 std::size_t free_parameter_count(const Planar_domain<GeomTraits>& domain) {
@@ -39,6 +43,10 @@ std::size_t free_parameter_count(const Planar_domain<GeomTraits>& domain) {
   \brief returns Morgan and Scott's dimension of \f$S^1_5\f$,
   \f$12 V_I + 10 V_B - 9 + \sigma\f$, or nothing when the domain is not simply connected
   (the formula holds for triangulated disks only).
+  \tparam GeomTraits a model of `Kernel`
+  \param domain the triangulated planar domain
+  \returns Morgan and Scott's dimension of \f$S^1_5\f$, \f$12 V_I + 10 V_B - 9 + \sigma\f$, or
+  nothing when the domain is not simply connected (the formula holds for triangulated disks only)
 */
 template <class GeomTraits>
 std::optional<long long> morgan_scott_dimension(const Planar_domain<GeomTraits>& domain) {
@@ -234,6 +242,10 @@ private:
   triangles, 2.6 s for 100352 triangles); on scattered points with decimal coordinates
   the rationals grow without bound (16 s for 30 points, 11 min for 50): use
   `spline_dimension_upper_bound()` there.
+  \tparam GeomTraits a model of `Kernel`
+  \param input the domain
+  \returns the dimension of the space \f$S^1_5\f$ of C^1 piecewise quintics over `domain`, computed
+  independently of the prescription scheme
 */
 template <class GeomTraits>
 std::size_t exact_spline_dimension(const Planar_domain<GeomTraits>& input) {
@@ -271,6 +283,9 @@ struct Dimension_bound {
   fill-in stays near the diagonal (measured on random points: 0.11 s for 10^3, 1.1 s for
   10^4, 12 s for 10^5; grouping the columns by kind instead took 11 s for 10^3 and 265 s
   for 3000).
+  \tparam GeomTraits a model of `Kernel`
+  \param input the domain
+  \returns an upper bound of \f$\dim S^1_5\f$ over `domain`
 */
 template <class GeomTraits>
 Dimension_bound spline_dimension_upper_bound(const Planar_domain<GeomTraits>& input) {

@@ -28,6 +28,7 @@ namespace Triangular_spline {
   There the C^1 diamond of the edge next to `vertex` cannot be solved for its edge-middle
   point (the barycentric weight it divides by is zero), so the propagation must be
   re-routed or the vertex moved.
+  \tparam Index an unsigned integer type of vertex indices
 */
 template <class Index>
 struct Degenerate_frame_t {
@@ -49,6 +50,7 @@ struct Degenerate_frame_t {
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief the degenerate frames of a domain and its singular vertices.
+  \tparam Index an unsigned integer type of vertex indices
 */
 template <class Index>
 struct Degenerate_frame_analysis {
@@ -106,6 +108,9 @@ double frame_weight(const Point_2& other, const Point_2& p, const Point_2& r, co
   with the end up to rounding (sine of the angle below \f$10^{-12}\f$) are reported too,
   flagged `numerical`: the double build re-routes them instead of dividing by a weight that
   is zero but for rounding.
+  \tparam GeomTraits a model of `Kernel`
+  \param domain the triangulated planar domain
+  \returns the degenerate frames found
 */
 template <class GeomTraits>
 Degenerate_frame_analysis<typename Planar_domain<GeomTraits>::Index>
@@ -144,6 +149,8 @@ find_degenerate_frames(const Planar_domain<GeomTraits>& domain) {
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief one vertex moved by `perturb_degenerate_vertices()`.
+  \tparam Point_2 a CGAL 2D point type
+  \tparam Index an unsigned integer type of vertex indices
 */
 template <class Point_2, class Index>
 struct Vertex_move {
@@ -173,7 +180,12 @@ struct Vertex_move {
   boundary corner does not move at all. Frames that no admissible move removes stay
   degenerate: `C1_quintic_spline` re-routes them (`find_degenerate_frames()` lists them).
   Vertex indices are unchanged, so data attached to vertices stays valid.
+  \tparam GeomTraits a model of `Kernel`
   \throws Invalid_input if an interior vertex has no admissible move (not observed).
+  \param domain the triangulated planar domain
+  \param moves receives the vertex moves made
+  \returns a copy of `domain` in which the vertices with degenerate frames are moved just enough
+  that no frame is degenerate, and reports the moves (Xu §4.4.4, second fix)
 */
 template <class GeomTraits>
 Planar_domain<GeomTraits> perturb_degenerate_vertices(

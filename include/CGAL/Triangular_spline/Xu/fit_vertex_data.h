@@ -106,6 +106,11 @@ enum class Fit {
   plane through \f$(v, z_v)\f$ closest to the neighbours' data (exact arithmetic with an
   exact number type; a vertex whose neighbours are collinear with it has no gradient and
   gets the zero vector).
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
+  \param domain the triangulated planar domain
+  \param values the data values, one per domain vertex
+  \returns the least-squares gradient at every vertex of the data `values`
 */
 template <class GeomTraits, class Value>
 std::vector<std::array<Value, 2>> estimate_gradients(const Planar_domain<GeomTraits>& domain,
@@ -442,10 +447,20 @@ struct Fit_statistics {
   star point \f$f(v^4 w)\f$ becomes \f$z_v + \nabla z_v \cdot (w - v)/5\f$, so the spline's
   gradient at every vertex is the given one (exactly with an exact number type); the other
   free points follow the fit.
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
   \throws Invalid_input if `values` or `given_gradients` has the wrong size or a non-finite
   value, if `smoothing` is negative or not finite or given to another fit than
   `MINIMAL_ENERGY` or with gradients, if gradients are given to `APPROXIMATE`, or if a fit
   other than `APPROXIMATE` is asked of a spline whose corner points are not free.
+  \param spline the spline whose free control points are set
+  \param values the data values, one per domain vertex
+  \param fit the fitting mode
+  \param local_degree the largest degree of the local polynomials
+  \param selection the rule choosing the degree of each local polynomial
+  \param smoothing the weight of the smoothing term
+  \param given_gradients the gradients at the vertices, one pair per domain vertex, if given
+  \returns statistics of what the fit did
 */
 template <class GeomTraits, class Value>
 Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,

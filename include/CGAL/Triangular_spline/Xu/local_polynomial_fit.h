@@ -89,6 +89,11 @@ public:
     threads (0: one per core for inexact number types and more than 2000 vertices, else
     one); the result does not depend on the number of threads.
     \throws Invalid_input if `values` has the wrong size or `max_degree` is not in 0..5
+    \param domain the triangulated planar domain
+    \param values the data values, one per domain vertex
+    \param max_degree the largest degree of a local polynomial
+    \param selection the rule choosing the degree of each local polynomial
+    \param threads the number of threads (0: automatic)
   */
   Local_polynomials(const Domain& domain, const std::vector<Value>& values, int max_degree = 3,
                     Degree_selection selection = Degree_selection::CROSS_VALIDATION,
@@ -126,6 +131,8 @@ public:
   }
 
   /// returns the degree \f$d_v\f$ chosen at vertex `v`.
+  /// \param v the index of a vertex
+  /// \returns the degree \f$d_v\f$ chosen at vertex `v`
   int degree(Index v) const { return m_degree[v]; }
   /*!
     returns how well the data around `v` are resolved: the root of the ratio of the
@@ -136,12 +143,18 @@ public:
     \f$h^{d_v - 1}\f$); near 1 when the polynomial predicts no better than a plane:
     data too sparse for their features, noise, cliffs. 1 where no plane is determined.
     Decided in `double` for every number type.
+    \param v the index of a vertex
+    \returns the resolution ratio, in [0, 1]
   */
   double resolution(Index v) const { return m_resolution[v]; }
   /// returns the largest degree asked for.
+  /// \returns the largest degree asked for
   int max_degree() const { return m_max_degree; }
 
   /// returns \f$p_v(x)\f$.
+  /// \param v the index of a vertex
+  /// \param x the point
+  /// \returns \f$p_v(x)\f$
   Value value(Index v, const Point_2& x) const {
     const std::array<std::pair<const Point_2*, int>, 1> arguments{{{&x, m_max_degree}}};
     return polar_value(v, arguments.begin(), arguments.end(), m_max_degree);
@@ -152,6 +165,12 @@ public:
     points with multiplicities in [`begin`, `end`) (pairs of a point pointer and a
     multiplicity, summing to `n`): for a quintic spline with `n` = 5, the control value that
     \f$p_v\f$ gives the control point with that polar label.
+    \tparam Iterator an input iterator over pairs of a `const Point_2*` and an `int`
+    \param v the index of a vertex
+    \param begin the first (point pointer, multiplicity) pair
+    \param end past the last pair
+    \param n the degree of the polar form
+    \returns the value of the polar form
   */
   template <class Iterator>
   Value polar_value(Index v, Iterator begin, Iterator end, int n) const {
@@ -190,6 +209,8 @@ public:
   }
 
   /// returns the gradient of \f$p_v\f$ at \f$v\f$.
+  /// \param v the index of a vertex
+  /// \returns the gradient of \f$p_v\f$ at \f$v\f$
   std::array<Value, 2> gradient(Index v) const {
     return {{m_scale[v] * coefficient(v, 1, 0), m_scale[v] * coefficient(v, 0, 1)}};
   }

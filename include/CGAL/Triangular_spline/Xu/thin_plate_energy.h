@@ -22,6 +22,8 @@ namespace Triangular_spline {
   \brief returns the multi-indices of degree `degree` in the order used by
   `thin_plate_energy_matrix()`: \f$i\f$ decreasing, then \f$j\f$ decreasing
   (\f$(m,0,0), (m-1,1,0), (m-1,0,1), (m-2,2,0), \dots\f$).
+  \param degree the degree
+  \returns the multi-indices of degree `degree` in the order used by `thin_plate_energy_matrix()`
 */
 inline std::vector<Multi_index> bernstein_indices(int degree) {
   std::vector<Multi_index> indices;
@@ -41,6 +43,7 @@ inline std::vector<Multi_index> bernstein_indices(int degree) {
   floating point this keeps the energy of thin triangles accurate, where forming
   \f$G = \sum_p w_p L_p^T M L_p\f$ first loses it to cancellation (its entries grow as
   the inverse fourth power of the triangle's height).
+  \tparam FT a field number type
 */
 template <class FT>
 struct Thin_plate_energy_factors {
@@ -65,7 +68,14 @@ struct Thin_plate_energy_factors {
   derivative formula), and products of Bernstein polynomials of degree \f$m-2\f$ integrate
   in closed form, \f$\int B_\alpha B_\beta = |T| \binom{m-2}{\alpha}\binom{m-2}{\beta} /
   \left(\binom{2m-4}{\alpha+\beta}\binom{2m-2}{2}\right)\f$.
+  \tparam Point_2 a CGAL 2D point type
   \throws Invalid_input if `degree < 2` or \f$(r,s,t)\f$ is collinear
+  \param degree the degree
+  \param r the first corner of the domain triangle
+  \param s the second corner of the domain triangle
+  \param t the third corner of the domain triangle
+  \returns the factors of the thin-plate energy of degree `degree` over the triangle \f$(r,s,t)\f$,
+  exact in `FT`
 */
 template <class Point_2>
 auto thin_plate_energy_factors(int degree, const Point_2& r, const Point_2& s, const Point_2& t) {
@@ -142,8 +152,13 @@ auto thin_plate_energy_factors(int degree, const Point_2& r, const Point_2& s, c
   under rotations and vanishes exactly on linear functions; it is the quadratic form of the
   `Fit::MINIMAL_ENERGY` fit. In floating point prefer the factors: \f$b^T G b\f$ cancels
   catastrophically on thin triangles.
+  \tparam Point_2 a CGAL 2D point type
   \pre `degree >= 2` and \f$(r,s,t)\f$ not collinear
   \returns the matrix row by row (`G[a * n + b]`, n the number of indices)
+  \param degree the degree
+  \param r the first corner of the domain triangle
+  \param s the second corner of the domain triangle
+  \param t the third corner of the domain triangle
 */
 template <class Point_2>
 auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, const Point_2& t) {
@@ -180,6 +195,10 @@ auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, co
   functional patch over its domain triangle, exactly in `FT`, differences first
   (`thin_plate_energy_factors()`). Sum it over the patches of a spline for the spline's
   energy: the measure of fairness the `Fit::MINIMAL_ENERGY` fit minimises.
+  \tparam GeomTraits a model of `Kernel`
+  \param patch the Bézier patch
+  \returns the thin-plate energy \f$\int f_{xx}^2 + 2 f_{xy}^2 + f_{yy}^2\f$ of a functional patch
+  over its domain triangle, exactly in `FT`, differences first (`thin_plate_energy_factors()`)
 */
 template <class GeomTraits>
 typename GeomTraits::FT thin_plate_energy(const Bezier_triangle<GeomTraits>& patch) {
