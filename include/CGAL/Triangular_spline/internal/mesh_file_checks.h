@@ -107,21 +107,23 @@ public:
       : m_input(input), m_comments(comments), m_line(line) {}
   // The next line with a token; false at the end of the file.
   bool next(std::vector<std::string>& tokens) {
-    std::string text;
-    while (std::getline(m_input, text)) {
+    while (std::getline(m_input, m_text)) {
       ++m_line;
-      tokens = m_comments ? tokens_of_line(text) : split_tokens(text);
+      tokens = m_comments ? tokens_of_line(m_text) : split_tokens(m_text);
       if (!tokens.empty())
         return true;
     }
     return false;
   }
   std::size_t line() const { return m_line; }
+  // The text of the line last returned, comments included.
+  const std::string& text() const { return m_text; }
 
 private:
   std::istream& m_input;
   bool m_comments;
   std::size_t m_line;
+  std::string m_text;
 };
 
 // The keyword of an OFF file as CGAL's File_header_OFF reads it: the first character and
@@ -188,6 +190,12 @@ inline void check_off_file(const std::string& path, std::istream& input, std::ui
           fail_at(path, lines.line(),
                   internal::quoted(t) + ": OFF files with colours or textures (C, ST) are not "
                                         "supported; write plain OFF");
+        // CGAL's scanner eats the character after the keyword: a '#' glued to it does not
+        // start a comment there, and "OFF#BINARY" is a binary header (found by fuzzing).
+        const std::size_t start = lines.text().find_first_not_of(blank_characters);
+        if (start + t.size() < lines.text().size() && lines.text()[start + t.size()] == '#')
+          fail_at(path, lines.line(),
+                  "a comment glued to the OFF keyword; separate them with a space");
         n_dimensional = keyword.n_dimensional;
         homogeneous = keyword.homogeneous;
         needed = n_dimensional ? 5 : 4;
