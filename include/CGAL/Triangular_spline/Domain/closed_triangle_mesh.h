@@ -50,6 +50,26 @@ struct Closed_mesh_summary {
 
 /*!
   \ingroup PkgTriangularSplineDomains
+  \brief the halfedge of `e` with the lower index: the orientation every per-edge quantity of
+  the package refers to.
+
+  `Surface_mesh` keeps the halfedge an edge descriptor was made from, so `halfedge(edge(h))` is
+  `h` itself; per-edge data need one orientation whatever descriptor is at hand.
+  \tparam Point_3 the point type
+  \param e the edge
+  \param mesh the mesh
+  \returns the halfedge of `e` with the lower index
+*/
+template <class Point_3>
+typename CGAL::Surface_mesh<Point_3>::Halfedge_index
+canonical_halfedge(typename CGAL::Surface_mesh<Point_3>::Edge_index e,
+                   const CGAL::Surface_mesh<Point_3>& mesh) {
+  const auto h = mesh.halfedge(e), o = mesh.opposite(h);
+  return std::size_t(h) < std::size_t(o) ? h : o;
+}
+
+/*!
+  \ingroup PkgTriangularSplineDomains
   \brief the outgoing halfedges of `v` in counter-clockwise order about the outward normal.
 
   \f$h_0\f$ is `opposite(halfedge(v))` and \f$h_{i+1} = \f$ `opposite(prev(h_i))`, so that
