@@ -3,6 +3,7 @@
 // invariances, local control and validation. The ids C1..C32 refer to AG1.md §8.
 #include "test_support.h"
 
+#include <CGAL/Triangular_spline/IO/surface_file.h>
 #include <CGAL/Triangular_spline/Xu/Pseudo_AG1_surface.h>
 #include <CGAL/Triangular_spline/Xu/pseudo_AG1_certificate.h>
 #include <CGAL/Triangular_spline/Xu/thesis_polyhedra.h>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -574,6 +576,130 @@ TEST(PseudoAG1Validation, TorusNineHasEulerCharacteristicZero) { // C30, Fig. 5.
   EXPECT_EQ(s.mesh_summary().components[0].euler, 0);
   EXPECT_EQ(s.mesh_summary().components[0].genus, 1);
   EXPECT_TRUE(TS::certify_pseudo_AG1(s).pseudo_AG1());
+}
+
+} // namespace
+
+// --- the tspline-surface file ---------------------------------------------------------------
+
+namespace {
+
+TEST(PseudoAG1SurfaceFile, ExactRoundTripKeepsEveryControlPointAndTheProof) {
+  const Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>("v-arm"),
+                                    Pseudo_AG1_options::exact());
+  std::stringstream file;
+  TS::write_surface_file(file, s);
+  const TS::Surface_file<Exact> read = TS::read_surface_file<Exact>(file, "test.surface");
+  EXPECT_TRUE(read.exact_numbers());
+  ASSERT_EQ(read.mesh().number_of_faces(), s.mesh().number_of_faces());
+  for (auto f : s.mesh().faces())
+    EXPECT_EQ(read.control_net(f), s.control_net(f));
+  // certified from the nets alone: the relations are solved, not read
+  const TS::Pseudo_AG1_view<TS::Surface_file<Exact>> view(read);
+  const auto c = TS::certify_pseudo_AG1(view);
+  EXPECT_TRUE(c.exact);
+  EXPECT_TRUE(c.pseudo_AG1());
+  EXPECT_EQ(c.ag1_edges, TS::certify_pseudo_AG1(s).ag1_edges);
+  for (auto e : s.mesh().edges())
+    EXPECT_EQ(view.edge_relation(e).relation, s.edge_relation(e).relation);
+}
+
+TEST(PseudoAG1SurfaceFile, RotatedFaceLinesAreReindexed) {
+  const Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>("octahedron"),
+                                    Pseudo_AG1_options::exact());
+  std::stringstream file;
+  TS::write_surface_file(file, s);
+  // rotate every face line (a b c) -> (b c a) and its patch accordingly
+  std::string text = file.str(), out;
+  std::istringstream in(text);
+  std::string line;
+  std::vector<std::string> lines;
+  while (std::getline(in, line))
+    lines.push_back(line);
+  std::size_t faces_at = 0, patches_at = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].rfind("faces ", 0) == 0)
+      faces_at = i;
+    if (lines[i] == "patches")
+      patches_at = i;
+  }
+  const std::size_t F = patches_at - faces_at - 1;
+  for (std::size_t f = 0; f < F; ++f) {
+    std::istringstream face(lines[faces_at + 1 + f]);
+    std::string a, b, c;
+    face >> a >> b >> c;
+    lines[faces_at + 1 + f] = b + " " + c + " " + a;
+    std::istringstream patch(lines[patches_at + 1 + f]);
+    std::vector<std::string> numbers(63);
+    for (auto& x : numbers)
+      patch >> x;
+    std::string rotated;
+    for (const auto& index : TS::multi_indices(5)) {
+      // new order (b, c, a): the point of index (i, j, k) over (b, c, a) is (k, i, j) over (a, b, c)
+      const std::size_t old = TS::linear_index(TS::Multi_index{index[2], index[0], index[1]});
+      for (int d = 0; d < 3; ++d)
+        rotated += (rotated.empty() ? "" : " ") + numbers[3 * old + std::size_t(d)];
+    }
+    lines[patches_at + 1 + f] = rotated;
+  }
+  for (const auto& l : lines)
+    out += l + "\n";
+  std::istringstream rotated_file(out);
+  const TS::Surface_file<Exact> read = TS::read_surface_file<Exact>(rotated_file, "rotated");
+  // the read faces start at b: compare the points with the same powers of the same vertices
+  auto corners = [](const Mesh<Exact>& m, Mesh<Exact>::Face_index f) {
+    const auto h = m.halfedge(f);
+    return std::array<Mesh<Exact>::Vertex_index, 3>{{m.target(h), m.target(m.next(h)), m.source(h)}};
+  };
+  std::size_t rotated_faces = 0;
+  for (auto f : s.mesh().faces()) {
+    const auto cs = corners(s.mesh(), f), cr = corners(read.mesh(), f);
+    rotated_faces += cs[0] != cr[0];
+    for (const auto& index : TS::multi_indices(5)) {
+      TS::Multi_index in_s;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          if (cr[std::size_t(a)] == cs[std::size_t(b)])
+            in_s[b] = index[a];
+      EXPECT_EQ(read.control_net(f)[TS::linear_index(index)], s.control_net(f)[TS::linear_index(in_s)]);
+    }
+  }
+  EXPECT_EQ(rotated_faces, s.mesh().number_of_faces());
+}
+
+TEST(PseudoAG1SurfaceFile, MalformedFilesGiveOneLineErrors) {
+  const std::string head = "tspline-surface 1\ndegree 5\nnumber_type exact\n";
+  const std::string tetra = "vertices 4\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n";
+  auto error = [](const std::string& text) {
+    std::istringstream in(text);
+    try {
+      TS::read_surface_file<Exact>(in, "bad.surface");
+    } catch (const TS::Invalid_input& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("tspline-spline 1\n").find("bad.surface:1: not a tspline-surface file"),
+            std::string::npos);
+  EXPECT_NE(error(head + "vertices 99999999\n0 0 0\n").find("cannot fit"), std::string::npos);
+  EXPECT_NE(error(head + tetra + "faces 1\n0 1 1\n").find("repeats a vertex"), std::string::npos);
+  EXPECT_NE(error(head + tetra + "faces 1\n0 1 7\n").find("out of range"), std::string::npos);
+  // an open mesh (one face) with its patch
+  std::string one = head + tetra + "faces 1\n0 1 2\npatches\n";
+  for (int i = 0; i < 63; ++i)
+    one += (i ? " 0" : "0");
+  one += "\nend\n";
+  EXPECT_NE(error(one).find("bad.surface: vertex 3 is isolated"), std::string::npos) << error(one);
+  std::string short_patch = head + tetra + "faces 1\n0 1 2\npatches\n";
+  for (int i = 0; i < 62; ++i)
+    short_patch += (i ? " 10" : "10");
+  EXPECT_NE(error(short_patch + "\nend\n").find(":11: expected 63 numbers for patch 0 of 1"),
+            std::string::npos)
+      << error(short_patch + "\nend\n");
+  EXPECT_NE(error(head + tetra + "faces 1\n0 1 2\npatches\n1 2 3\nend\n").find("cannot fit"),
+            std::string::npos);
+  EXPECT_NE(error(head + tetra + "faces 0\npatches\nend\nmore\n").find("after \"end\""),
+            std::string::npos);
 }
 
 } // namespace

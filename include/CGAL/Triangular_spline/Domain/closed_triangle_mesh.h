@@ -106,6 +106,8 @@ outgoing_ring(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mes
   \tparam Point_3 a CGAL point type
   \param mesh the mesh, changed only by the reorientation
   \param context the prefix of error messages (e.g. "pseudo-AG1")
+  \param orient reverse the faces of inward components (otherwise they are left as they are,
+  and not counted as reoriented)
   \throws Invalid_input naming the first offending element: no face, a non-triangle face, a
   border edge, a non-manifold or isolated vertex, a vertex of valence below 3, a non-finite
   coordinate, a face of zero area, a component of zero volume
@@ -113,7 +115,7 @@ outgoing_ring(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mes
 */
 template <class Point_3>
 Closed_mesh_summary prepare_closed_triangle_mesh(CGAL::Surface_mesh<Point_3>& mesh,
-                                                 const std::string& context) {
+                                                 const std::string& context, bool orient = true) {
   using Mesh = CGAL::Surface_mesh<Point_3>;
   using K = typename CGAL::Kernel_traits<Point_3>::Kernel;
   using FT = typename K::FT;
@@ -123,21 +125,22 @@ Closed_mesh_summary prepare_closed_triangle_mesh(CGAL::Surface_mesh<Point_3>& me
     mesh.collect_garbage();
   if (mesh.number_of_faces() == 0)
     throw Invalid_input(prefix + "the mesh has no face");
-  if (!CGAL::is_valid_polygon_mesh(mesh))
-    throw Invalid_input(prefix + "the mesh is not a valid polygon mesh");
   for (auto f : mesh.faces())
     if (CGAL::halfedges_around_face(mesh.halfedge(f), mesh).size() != 3)
       throw Invalid_input(prefix + "face " + std::to_string(std::size_t(f)) + " is not a triangle");
+  for (auto v : mesh.vertices())
+    if (mesh.is_isolated(v))
+      throw Invalid_input(prefix + "vertex " + std::to_string(std::size_t(v)) + " is isolated");
   for (auto h : mesh.halfedges())
     if (mesh.is_border(h))
       throw Invalid_input(prefix + "the mesh is not closed: edge " +
                           std::to_string(std::size_t(mesh.source(h))) + "-" +
                           std::to_string(std::size_t(mesh.target(h))) +
                           " has a single face (meshes with border are not supported)");
+  if (!CGAL::is_valid_polygon_mesh(mesh))
+    throw Invalid_input(prefix + "the mesh is not a valid polygon mesh");
   for (auto v : mesh.vertices()) {
     const std::string name = "vertex " + std::to_string(std::size_t(v));
-    if (mesh.is_isolated(v))
-      throw Invalid_input(prefix + name + " is isolated");
     if (PMP::is_non_manifold_vertex(v, mesh))
       throw Invalid_input(prefix + "the mesh is not manifold at " + name);
     if (mesh.degree(v) < 3)
@@ -194,7 +197,7 @@ Closed_mesh_summary prepare_closed_triangle_mesh(CGAL::Surface_mesh<Point_3>& me
     if (volume[c] == FT(0))
       throw Invalid_input(prefix + "connected component " + std::to_string(c) +
                           " encloses no volume (flat or self-overlapping)");
-    if (volume[c] < FT(0)) {
+    if (orient && volume[c] < FT(0)) {
       PMP::reverse_face_orientations(faces[c], mesh);
       info.reoriented = true;
       ++summary.reoriented;

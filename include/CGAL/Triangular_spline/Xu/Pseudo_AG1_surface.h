@@ -144,10 +144,10 @@ inline Pseudo_AG1_options pseudo_AG1_preset(const std::string& name) {
 */
 template <class Kernel>
 struct Corner_plane {
-  typename Kernel::Vector_3 normal;   ///< \f$N_v\f$ (any positive length)
+  typename Kernel::Vector_3 normal{CGAL::NULL_VECTOR};   ///< \f$N_v\f$ (any positive length)
   typename Kernel::FT offset;         ///< \f$H_v\f$
-  typename Kernel::Vector_3 centroid; ///< \f$C_v\f$, the mean of the first-approximation stars
-  typename Kernel::Vector_3 corner;   ///< \f$z_v\f$
+  typename Kernel::Vector_3 centroid{CGAL::NULL_VECTOR}; ///< \f$C_v\f$, the mean of the first-approximation stars
+  typename Kernel::Vector_3 corner{CGAL::NULL_VECTOR};   ///< \f$z_v\f$
   /// the umbrella: chart coordinates of \f$S_{v\to w_i} - z_v\f$ in ring order
   std::vector<typename Kernel::Point_2> umbrella;
   Corner_plane_normal normal_used = Corner_plane_normal::AREA_WEIGHTED; ///< after fallbacks
@@ -474,20 +474,20 @@ private:
 
   void build() {
     const std::size_t H = m_mesh.number_of_halfedges();
-    m_face_normal.assign(m_mesh.number_of_faces(), Vector_3());
-    m_face_unit.assign(m_mesh.number_of_faces(), Vector_3());
+    m_face_normal.assign(m_mesh.number_of_faces(), Vector_3(CGAL::NULL_VECTOR));
+    m_face_unit.assign(m_mesh.number_of_faces(), Vector_3(CGAL::NULL_VECTOR));
     m_face_area.assign(m_mesh.number_of_faces(), 0);
     m_edges.assign(m_mesh.number_of_edges(), Pseudo_AG1_edge<FT>());
     m_planes.assign(m_mesh.number_of_vertices(), Corner_plane<Kernel>());
     m_chart_axis.assign(m_mesh.number_of_vertices(), 2);
     m_chart_flip.assign(m_mesh.number_of_vertices(), false);
-    m_star0.assign(H, Vector_3());
-    m_star.assign(H, Vector_3());
-    m_middle.assign(H, Vector_3());
-    m_inner0.assign(H, Vector_3());
-    m_inner.assign(H, Vector_3());
-    m_flip0.assign(H, Vector_3());
-    m_flip.assign(H, Vector_3());
+    m_star0.assign(H, Vector_3(CGAL::NULL_VECTOR));
+    m_star.assign(H, Vector_3(CGAL::NULL_VECTOR));
+    m_middle.assign(H, Vector_3(CGAL::NULL_VECTOR));
+    m_inner0.assign(H, Vector_3(CGAL::NULL_VECTOR));
+    m_inner.assign(H, Vector_3(CGAL::NULL_VECTOR));
+    m_flip0.assign(H, Vector_3(CGAL::NULL_VECTOR));
+    m_flip.assign(H, Vector_3(CGAL::NULL_VECTOR));
     for (auto v : m_mesh.vertices())
       m_planes[v].star_scale = m_options.star_scale;
     geometry();
@@ -512,7 +512,7 @@ private:
       m_face_area[f] = length(m_face_normal[f]) / 2;
     }
     m_edge_length.assign(m_mesh.number_of_edges(), 0);
-    m_cross_normal.assign(m_mesh.number_of_edges(), Vector_3());
+    m_cross_normal.assign(m_mesh.number_of_edges(), Vector_3(CGAL::NULL_VECTOR));
     for (auto e : m_mesh.edges()) {
       const auto h = canonical_halfedge(e, m_mesh);
       const Face_index A = m_mesh.face(h), B = m_mesh.face(m_mesh.opposite(h));

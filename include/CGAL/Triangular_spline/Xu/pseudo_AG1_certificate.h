@@ -13,6 +13,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -36,7 +39,8 @@ struct Pseudo_AG1_edge_certificate {
   /// the order achieved by `check_C1_join()` on the reparameterized pair (-1: not \f$C^0\f$;
   /// -2: not computed, the edge is inadmissible)
   int join_order = -2;
-  double max_residual = 0; ///< the largest coordinate of any difference
+  double max_residual = 0;    ///< the largest coordinate of any difference (all five diamonds)
+  double middle_residual = 0; ///< the same over the \f$C^0\f$ conditions and middle diamonds
 };
 
 /*!
@@ -82,8 +86,9 @@ struct Pseudo_AG1_certificate {
   `edge_relation()`, `corner_plane()`, `star()` and `is_exact()` (e.g. a wrapper that edits
   a surface)
   \param surface the surface
-  \param tolerance the absolute tolerance for inexact surfaces; negative: \f$10^{-10}\f$ times
-  the bounding-box diagonal of the input. Ignored (0) for exact surfaces.
+  \param tolerance the absolute tolerance; negative: exact verdicts for exact surfaces and
+  \f$10^{-10}\f$ times the bounding-box diagonal of the input otherwise. A positive tolerance
+  makes every verdict a tolerance verdict, never a proof.
   \returns the certificate
 */
 template <class Surface>
@@ -94,7 +99,7 @@ Pseudo_AG1_certificate certify_pseudo_AG1(const Surface& surface, double toleran
   using Point_2 = typename Kernel::Point_2;
   const auto& mesh = surface.mesh();
   Pseudo_AG1_certificate c;
-  c.exact = surface.is_exact();
+  c.exact = surface.is_exact() && tolerance <= 0;
   if (c.exact) {
     tolerance = 0;
   } else if (tolerance < 0) {
@@ -144,6 +149,7 @@ Pseudo_AG1_certificate certify_pseudo_AG1(const Surface& surface, double toleran
     for (int i = 0; i <= 5; ++i) {
       const Vector_3 d = point(netB, lb, 0, i) - point(netA, la, 0, i);
       E.max_residual = std::max(E.max_residual, size(d));
+      E.middle_residual = std::max(E.middle_residual, size(d));
       E.c0 = E.c0 && is_zero(d);
     }
     for (int i = 0; i <= 4; ++i) {
@@ -151,6 +157,8 @@ Pseudo_AG1_certificate certify_pseudo_AG1(const Surface& surface, double toleran
           point(netB, lb, 1, i) - (R[0] * point(netA, la, 1, i) + R[1] * point(netA, la, 0, i + 1) +
                                    R[2] * point(netA, la, 0, i));
       E.max_residual = std::max(E.max_residual, size(d));
+      if (i >= 1 && i <= 3)
+        E.middle_residual = std::max(E.middle_residual, size(d));
       E.diamonds[std::size_t(i)] = is_zero(d);
     }
     E.middle = E.c0 && E.diamonds[1] && E.diamonds[2] && E.diamonds[3];
@@ -213,6 +221,143 @@ Pseudo_AG1_certificate certify_pseudo_AG1(const Surface& surface, double toleran
   }
   return c;
 }
+
+/*!
+  \ingroup PkgTriangularSplineXu
+  \brief a quintic surface over a closed mesh (e.g. a `Surface_file`) seen through the
+  quantities `certify_pseudo_AG1()` reads, all recovered from the control nets alone: the edge
+  relations from the middle diamonds, the corner points and planes from the corner regions.
+
+  The relation of an edge is solved exactly from its first non-degenerate middle diamond
+  (\f$D_3\f$, then \f$D_1\f$, then \f$D_2\f$); the certificate then checks every diamond against
+  it, so a verdict on a file does not trust anything the file does not contain.
+  \tparam Surface a class with `mesh()`, `degree()` and `control_net(f)` (in
+  `vertices_around_face` order) over a kernel `Geom_traits`
+*/
+template <class Surface>
+class Pseudo_AG1_view {
+public:
+  /// the kernel
+  using Geom_traits = typename Surface::Geom_traits;
+  /// the mesh
+  using Mesh = std::decay_t<decltype(std::declval<const Surface&>().mesh())>;
+  /// face index
+  using Face_index = typename Mesh::Face_index;
+  /// vertex index
+  using Vertex_index = typename Mesh::Vertex_index;
+  /// halfedge index
+  using Halfedge_index = typename Mesh::Halfedge_index;
+  /// edge index
+  using Edge_index = typename Mesh::Edge_index;
+
+  /// the view of `surface` (kept by reference)
+  /// \throws Invalid_input if the patches are not quintic
+  explicit Pseudo_AG1_view(const Surface& surface) : m_surface(surface) {
+    using FT = typename Geom_traits::FT;
+    using Vector_3 = typename Geom_traits::Vector_3;
+    if (surface.degree() != 5)
+      throw Invalid_input("pseudo-AG1 certificate: the patches have degree " +
+                          std::to_string(surface.degree()) + ", not 5");
+    const Mesh& mesh = surface.mesh();
+    m_edges.resize(mesh.number_of_edges());
+    m_relation_found.assign(mesh.number_of_edges(), false);
+    auto local = [&](Face_index f, Vertex_index v) {
+      const auto h0 = mesh.halfedge(f);
+      if (mesh.target(h0) == v)
+        return 0;
+      return mesh.target(mesh.next(h0)) == v ? 1 : 2;
+    };
+    for (auto e : mesh.edges()) {
+      const auto h = canonical_halfedge(e, mesh), o = mesh.opposite(h);
+      const auto A = mesh.face(h), B = mesh.face(o);
+      const std::array<int, 3> la{
+          {local(A, mesh.target(mesh.next(h))), local(A, mesh.source(h)), local(A, mesh.target(h))}},
+          lb{{local(B, mesh.target(mesh.next(o))), local(B, mesh.source(h)),
+              local(B, mesh.target(h))}};
+      const auto& netA = surface.control_net(A);
+      const auto& netB = surface.control_net(B);
+      auto point = [](const auto& net, const std::array<int, 3>& l, int g, int i) {
+        Multi_index index;
+        index[l[0]] = g;
+        index[l[1]] = i;
+        index[l[2]] = 5 - g - i;
+        return net[linear_index(index)];
+      };
+      m_edges[e].relation = {{FT(-1), FT(1), FT(1)}};
+      for (int i : {3, 1, 2}) {
+        const Vector_3 base = point(netA, la, 0, i);
+        const Vector_3 u = point(netA, la, 1, i) - base, v = point(netA, la, 0, i + 1) - base,
+                       y = point(netB, lb, 1, i) - base;
+        // y = lambda u + mu v, solved on the coordinate pair of largest determinant: for
+        // consistent exact data every nonzero one gives the same answer; for rounded data
+        // the largest is the best conditioned
+        int best = -1;
+        FT best_det(0);
+        for (int a = 0; a < 3; ++a) {
+          const int b = (a + 1) % 3;
+          const FT det = u[a] * v[b] - u[b] * v[a];
+          if (CGAL::abs(det) > CGAL::abs(best_det))
+            best = a, best_det = det;
+        }
+        if (best >= 0) {
+          const int a = best, b = (a + 1) % 3;
+          const FT lambda = (y[a] * v[b] - y[b] * v[a]) / best_det;
+          const FT mu = (u[a] * y[b] - u[b] * y[a]) / best_det;
+          m_edges[e].relation = {{lambda, mu, FT(1) - lambda - mu}};
+          m_relation_found[e] = true;
+        }
+        if (m_relation_found[e])
+          break;
+      }
+    }
+    m_planes.resize(mesh.number_of_vertices());
+    m_star.resize(mesh.number_of_halfedges());
+    for (auto h : mesh.halfedges()) {
+      const Face_index f = mesh.face(h);
+      Multi_index index;
+      index[local(f, mesh.source(h))] = 4;
+      index[local(f, mesh.target(h))] = 1;
+      m_star[h] = surface.control_net(f)[linear_index(index)];
+      Multi_index corner;
+      corner[local(f, mesh.source(h))] = 5;
+      m_planes[mesh.source(h)].corner = surface.control_net(f)[linear_index(corner)];
+    }
+    for (auto v : mesh.vertices()) {
+      const auto ring = outgoing_ring(v, mesh);
+      auto& plane = m_planes[v];
+      plane.normal = CGAL::NULL_VECTOR;
+      for (std::size_t i = 0; i < ring.size() && plane.normal == CGAL::NULL_VECTOR; ++i)
+        plane.normal = CGAL::cross_product(m_star[ring[i]] - plane.corner,
+                                           m_star[ring[(i + 1) % ring.size()]] - plane.corner);
+    }
+  }
+
+  /// the mesh
+  const Mesh& mesh() const { return m_surface.mesh(); }
+  /// the net of `f`
+  decltype(auto) control_net(Face_index f) const { return m_surface.control_net(f); }
+  /// the relation solved from the middle diamonds of `e`
+  const Pseudo_AG1_edge<typename Geom_traits::FT>& edge_relation(Edge_index e) const {
+    return m_edges[e];
+  }
+  /// `false` if every middle diamond of `e` is degenerate (no relation determined)
+  bool relation_determined(Edge_index e) const { return m_relation_found[e]; }
+  /// the corner point and a normal of the corner triangle at `v`
+  const Corner_plane<Geom_traits>& corner_plane(Vertex_index v) const { return m_planes[v]; }
+  /// the star point of `h`
+  const typename Geom_traits::Vector_3& star(Halfedge_index h) const { return m_star[h]; }
+  /// the verdicts are exact iff the number type is
+  bool is_exact() const {
+    return CGAL::Algebraic_structure_traits<typename Geom_traits::FT>::Is_exact::value;
+  }
+
+private:
+  const Surface& m_surface;
+  std::vector<Pseudo_AG1_edge<typename Geom_traits::FT>> m_edges;
+  std::vector<bool> m_relation_found;
+  std::vector<Corner_plane<Geom_traits>> m_planes;
+  std::vector<typename Geom_traits::Vector_3> m_star;
+};
 
 } // namespace Triangular_spline
 } // namespace CGAL
