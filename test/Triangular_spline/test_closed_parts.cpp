@@ -1,15 +1,20 @@
 // Tests of the self-contained parts of the pseudo-AG^1 construction over closed meshes
-// (SPEC_AG1): the re-centering of a corner point (§4.2 S5, Xu Fig. 6.5, test C22).
+// (SPEC_AG1): the re-centering of a corner point (§4.2 S5, Xu Fig. 6.5, test C22) and the
+// test polyhedra (§8).
 
 #include "test_support.h"
 
+#include <CGAL/Triangular_spline/Xu/thesis_polyhedra.h>
 #include <CGAL/Triangular_spline/internal/recentering.h>
 
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -218,4 +223,142 @@ TEST(Recentering, GoldenInSimpleCartesianDouble) {
   EXPECT_EQ(r.cuts, 1);
   EXPECT_NEAR(r.center.x(), -12.0 / 17, 1e-14);
   EXPECT_NEAR(r.center.y(), 189.0 / 68, 1e-14);
+}
+
+// ---------------------------------------------------------------------------------------
+// Test polyhedra (SPEC_AG1 §8)
+
+namespace {
+
+using Exact_mesh = CGAL::Surface_mesh<Exact_kernel::Point_3>;
+
+struct Expected_counts {
+  std::size_t V, E, F;
+  int chi;
+};
+
+const std::map<std::string, Expected_counts> expected_counts{
+    {"tetrahedron", {4, 6, 4, 2}},     {"sato", {4, 6, 4, 2}},
+    {"octahedron", {6, 12, 8, 2}},     {"cube", {8, 18, 12, 2}},
+    {"cube-centres", {14, 36, 24, 2}}, {"icosahedron", {12, 30, 20, 2}},
+    {"pentakis", {42, 120, 80, 2}},    {"torus", {72, 216, 144, 0}},
+    {"torus9", {9, 27, 18, 0}},        {"star", {14, 36, 24, 2}},
+    {"v-arm", {10, 24, 16, 2}}};
+
+template <class K>
+typename K::FT signed_volume_times_6(const CGAL::Surface_mesh<typename K::Point_3>& mesh) {
+  typename K::FT v(0);
+  for (auto f : mesh.faces()) {
+    std::vector<typename K::Vector_3> p;
+    for (auto x : vertices_around_face(halfedge(f, mesh), mesh))
+      p.push_back(mesh.point(x) - CGAL::ORIGIN);
+    v += p[0] * CGAL::cross_product(p[1], p[2]);
+  }
+  return v;
+}
+
+} // namespace
+
+TEST(Thesis_polyhedra, EveryShapeIsAClosedOutwardTriangleMesh) {
+  ASSERT_EQ(TS::thesis_polyhedron_names().size(), expected_counts.size());
+  for (const std::string& name : TS::thesis_polyhedron_names()) {
+    SCOPED_TRACE(name);
+    ASSERT_EQ(expected_counts.count(name), 1u);
+    const Expected_counts& c = expected_counts.at(name);
+    const Exact_mesh mesh = TS::thesis_polyhedron<Exact_kernel>(name);
+    EXPECT_TRUE(mesh.is_valid(false));
+    EXPECT_TRUE(CGAL::is_closed(mesh));
+    EXPECT_TRUE(CGAL::is_triangle_mesh(mesh));
+    EXPECT_EQ(mesh.number_of_vertices(), c.V);
+    EXPECT_EQ(mesh.number_of_edges(), c.E);
+    EXPECT_EQ(mesh.number_of_faces(), c.F);
+    EXPECT_EQ(int(c.V) - int(c.E) + int(c.F), c.chi);
+    EXPECT_EQ(int(mesh.number_of_vertices()) - int(mesh.number_of_edges()) +
+                  int(mesh.number_of_faces()),
+              c.chi);
+    // exact even for the converted double coordinates: they are converted exactly
+    EXPECT_GT(signed_volume_times_6<Exact_kernel>(mesh), Q(0));
+    for (auto f : mesh.faces()) {
+      std::vector<Exact_kernel::Point_3> p;
+      for (auto x : vertices_around_face(halfedge(f, mesh), mesh))
+        p.push_back(mesh.point(x));
+      EXPECT_FALSE(CGAL::collinear(p[0], p[1], p[2])) << "face " << f.idx();
+    }
+    // manifold at every vertex: one cycle of faces (Surface_mesh could hold two)
+    for (auto v : mesh.vertices()) {
+      std::size_t around = 0;
+      for (auto h : halfedges_around_target(halfedge(v, mesh), mesh)) {
+        (void)h;
+        ++around;
+      }
+      EXPECT_EQ(around, degree(v, mesh)) << "vertex " << v.idx();
+      EXPECT_GE(around, 3u);
+    }
+  }
+}
+
+TEST(Thesis_polyhedra, EmbeddedWithoutSelfIntersections) {
+  for (const std::string& name : TS::thesis_polyhedron_names()) {
+    const auto mesh = TS::thesis_polyhedron<Epick>(name);
+    EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(mesh)) << name;
+  }
+}
+
+TEST(Thesis_polyhedra, TetrahedronFacesInTheSpecOrder) {
+  const Exact_mesh mesh = TS::thesis_polyhedron<Exact_kernel>("tetrahedron");
+  const std::vector<Exact_kernel::Point_3> abcd{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  for (auto v : mesh.vertices()) {
+    EXPECT_EQ(mesh.point(v), abcd[v.idx()]);
+  }
+  // abc, adb, bdc, cda, each starting at its listed first vertex
+  const std::vector<std::vector<std::size_t>> faces{{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
+  for (auto f : mesh.faces()) {
+    std::vector<std::size_t> around;
+    for (auto x : vertices_around_face(halfedge(f, mesh), mesh))
+      around.push_back(x.idx());
+    EXPECT_EQ(around, faces[f.idx()]) << "face " << f.idx();
+  }
+}
+
+TEST(Thesis_polyhedra, ExactCoordinatesAndValences) {
+  const Exact_mesh varm = TS::thesis_polyhedron<Exact_kernel>("v-arm");
+  EXPECT_EQ(varm.point(Exact_mesh::Vertex_index(2)), Exact_kernel::Point_3(q(1, 2), q(1, 2), 0));
+  EXPECT_EQ(varm.point(Exact_mesh::Vertex_index(5)), Exact_kernel::Point_3(q(-1, 10), q(1, 10), 0));
+  EXPECT_EQ(varm.point(Exact_mesh::Vertex_index(8)), Exact_kernel::Point_3(0, 0, 1));
+  const Exact_mesh star = TS::thesis_polyhedron<Exact_kernel>("star");
+  EXPECT_EQ(star.point(Exact_mesh::Vertex_index(12)), Exact_kernel::Point_3(0, 0, q(3, 5)));
+  EXPECT_EQ(star.point(Exact_mesh::Vertex_index(3)), Exact_kernel::Point_3(0, q(2, 5), 0));
+  // the triangulated cube: valence 6 at vertices 0 and 7, 4 elsewhere; vertex numbering
+  const Exact_mesh cube = TS::thesis_polyhedron<Exact_kernel>("cube");
+  for (auto v : cube.vertices()) {
+    EXPECT_EQ(degree(v, cube), (v.idx() == 0 || v.idx() == 7) ? 6u : 4u) << v.idx();
+    const int i = int(v.idx());
+    EXPECT_EQ(cube.point(v), Exact_kernel::Point_3(i & 4 ? 1 : -1, i & 2 ? 1 : -1, i & 1 ? 1 : -1));
+  }
+  // the six diagonals, each through the smallest vertex number of its square
+  for (const auto& d : std::vector<std::array<std::size_t, 2>>{
+           {{0, 3}}, {{4, 7}}, {{0, 5}}, {{2, 7}}, {{0, 6}}, {{1, 7}}})
+    EXPECT_TRUE(
+        CGAL::halfedge(Exact_mesh::Vertex_index(d[0]), Exact_mesh::Vertex_index(d[1]), cube).second)
+        << d[0] << "-" << d[1];
+  // with face centres: the centres have valence 4 and lie in their faces
+  const Exact_mesh centres = TS::thesis_polyhedron<Exact_kernel>("cube-centres");
+  for (std::size_t i = 8; i < 14; ++i)
+    EXPECT_EQ(degree(Exact_mesh::Vertex_index(i), centres), 4u);
+  // the 9-vertex torus: every vertex of valence 6
+  const Exact_mesh torus9 = TS::thesis_polyhedron<Exact_kernel>("torus9");
+  for (auto v : torus9.vertices())
+    EXPECT_EQ(degree(v, torus9), 6u);
+}
+
+TEST(Thesis_polyhedra, UnknownNameIsRejectedWithTheList) {
+  try {
+    TS::thesis_polyhedron<Epick>("dodecahedron");
+    FAIL() << "no exception";
+  } catch (const TS::Invalid_input& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("dodecahedron"), std::string::npos);
+    for (const std::string& name : TS::thesis_polyhedron_names())
+      EXPECT_NE(what.find(name), std::string::npos) << name;
+  }
 }
