@@ -434,6 +434,10 @@ TEST(AG1System, TetrahedronHasAtLeastThreeInadmissibleEdges) {
       good += bad == 0;
     }
     ASSERT_LE(good, 1u);
+    // lambda keeps its sign under reversal, so #inadmissible edges = (sum of bad) / 2 =
+    // #vertices with the centre outside their star triangle = #folded umbrellas: 3 or 4
+    ASSERT_EQ(w.inadmissible_edges.size(), 4 - good);
+    ASSERT_EQ(w.folded_vertices.size(), 4 - good);
   }
   std::cout << "[ finding  ] tetrahedron: " << walks << " random starts walked, " << degenerate
             << " degenerate; numbers of inadmissible edges seen:";
@@ -442,6 +446,7 @@ TEST(AG1System, TetrahedronHasAtLeastThreeInadmissibleEdges) {
   std::cout << std::endl;
   EXPECT_GT(walks, 1900u);
   EXPECT_EQ(minimum, 3u);
+  EXPECT_EQ(counts, (std::set<std::size_t>{3, 4}));
 }
 
 TEST(AG1System, DegenerateStartUmbrellaStops) {

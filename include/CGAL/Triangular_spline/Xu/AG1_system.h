@@ -601,7 +601,10 @@ projected_umbrella(const CGAL::Surface_mesh<Point_3>& mesh,
     degenerate start umbrella stops the walk at once.
 
   The inconsistent case keeps walking with the least-squares umbrella, so that the report
-  covers the whole mesh. The geometry of the mesh is used only for the reference umbrellas;
+  covers the whole mesh. Folded umbrellas (`is_folded_umbrella()`: a linear solution need not
+  be a fan) and relations with \f$\mu = 0\f$ or \f$\nu = 0\f$ are reported, not stopped on:
+  the walk solves the linear system of §6.1; whether a surface can be built on the solution is
+  what these lists tell. The geometry of the mesh is used only for the reference umbrellas;
   the relations refer to the mesh's orientation (outward after
   `prepare_closed_triangle_mesh()`).
   \tparam FT the number type of the umbrellas and relations (deduced from `start_umbrella`);
@@ -611,8 +614,9 @@ projected_umbrella(const CGAL::Surface_mesh<Point_3>& mesh,
   \param mesh a closed manifold triangle mesh without garbage, consistently oriented
   \param start the start vertex \f$v_0\f$
   \param start_umbrella its umbrella, in `outgoing_ring(start)` order
-  \param tolerance for inexact number types: the largest residual counted as consistent, and
-  the largest \f$|\sin|\f$ of a corner angle counted as degenerate (unused for exact types)
+  \param tolerance for inexact number types: the largest residual counted as consistent, the
+  largest \f$|\sin|\f$ of a corner angle counted as degenerate, and the relative size of a
+  \f$\mu\f$ or \f$\nu\f$ counted as 0 (unused for exact types)
   \throws Invalid_input if the mesh has garbage, a border, a non-triangle face or a
   non-manifold vertex, if `start` is not a vertex of the mesh, or if `start_umbrella` does not
   have one spoke per neighbour of `start`
