@@ -693,7 +693,7 @@ TEST(PseudoAG1SurfaceFile, MalformedFilesGiveOneLineErrors) {
   std::string short_patch = head + tetra + "faces 1\n0 1 2\npatches\n";
   for (int i = 0; i < 62; ++i)
     short_patch += (i ? " 10" : "10");
-  EXPECT_NE(error(short_patch + "\nend\n").find(":11: expected 63 numbers for patch 0 of 1"),
+  EXPECT_NE(error(short_patch + "\nend\n").find(":12: expected 63 numbers for patch 0 of 1"),
             std::string::npos)
       << error(short_patch + "\nend\n");
   EXPECT_NE(error(head + tetra + "faces 1\n0 1 2\npatches\n1 2 3\nend\n").find("cannot fit"),

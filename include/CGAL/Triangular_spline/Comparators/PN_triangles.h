@@ -129,7 +129,7 @@ void pn_check_mesh(const CGAL::Surface_mesh<typename K::Point_3>& mesh) {
 } // namespace internal
 
 /*!
-  \ingroup PkgTriangularSplineSplines
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief the curved PN triangles of a triangle mesh (Vlachos, Peters, Boyd, Mitchell 2001),
   a comparator for the pseudo-\f$AG^1\f$ surfaces: one cubic patch per face from the
   vertex positions and normals only.
@@ -168,7 +168,7 @@ pn_triangles(const CGAL::Surface_mesh<typename K::Point_3>& mesh, const NormalMa
 }
 
 /*!
-  \ingroup PkgTriangularSplineSplines
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief the curved PN triangles of `mesh` with the area-weighted vertex normals: the sum of
   the incident faces' normals weighted by their areas, normalised in `double` (so not exact
   with an exact kernel). See `pn_triangles(const CGAL::Surface_mesh<typename K::Point_3>&,

@@ -23,7 +23,7 @@ namespace CGAL {
 namespace Triangular_spline {
 
 /*!
-  \ingroup PkgTriangularSplineDomains
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief one connected component of a closed triangle mesh (Xu §5.2: a triangulated
   polyhedron when the mesh is connected).
 */
@@ -37,7 +37,7 @@ struct Closed_mesh_component {
 };
 
 /*!
-  \ingroup PkgTriangularSplineDomains
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief what `prepare_closed_triangle_mesh()` found and changed.
 */
 struct Closed_mesh_summary {
@@ -49,7 +49,7 @@ struct Closed_mesh_summary {
 };
 
 /*!
-  \ingroup PkgTriangularSplineDomains
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief the halfedge of `e` with the lower index: the orientation every per-edge quantity of
   the package refers to.
 
@@ -69,7 +69,7 @@ canonical_halfedge(typename CGAL::Surface_mesh<Point_3>::Edge_index e,
 }
 
 /*!
-  \ingroup PkgTriangularSplineDomains
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief the outgoing halfedges of `v` in counter-clockwise order about the outward normal.
 
   \f$h_0\f$ is `opposite(halfedge(v))` and \f$h_{i+1} = \f$ `opposite(prev(h_i))`, so that
@@ -95,7 +95,7 @@ outgoing_ring(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mes
 }
 
 /*!
-  \ingroup PkgTriangularSplineDomains
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief checks that `mesh` is a closed manifold triangle mesh (Xu §5.2, (D1) and (D2)) with
   finite coordinates and no zero-area face, and orients every connected component outward
   (positive signed volume), reversing the faces of those that are not.

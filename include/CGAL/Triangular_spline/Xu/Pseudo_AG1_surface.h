@@ -26,42 +26,42 @@
 namespace CGAL {
 namespace Triangular_spline {
 
-/// \ingroup PkgTriangularSplineXu
+/// \ingroup PkgTriangularSplinePseudoAG1
 /// \brief how the normal of a corner plane is chosen (Xu §6.2.1, approaches 1–3).
 enum class Corner_plane_normal {
   CENTROID,     ///< approach 1: the line from the vertex to the centroid of its first stars
   AVERAGE,      ///< approach 2: the plain average of the unit normals of the incident faces
   AREA_WEIGHTED ///< approach 3: the area-weighted average, \f$\sum (w_i - v)\times(w_{i+1} - v)\f$
 };
-/// \ingroup PkgTriangularSplineXu
+/// \ingroup PkgTriangularSplinePseudoAG1
 /// \brief how the star points are placed in the corner plane (Xu §6.2.1).
 enum class Star_placement {
   UMBRELLA,  ///< lengths kept, angles scaled to sum to \f$2\pi\f$ (Fig. 6.6, "an umbrella opening")
   PROJECTION ///< orthogonal projection of the first approximations (rational)
 };
-/// \ingroup PkgTriangularSplineXu
+/// \ingroup PkgTriangularSplinePseudoAG1
 /// \brief the angles of the umbrella (AG1.md [U3]).
 enum class Umbrella_angles { PROPORTIONAL, EQUAL };
-/// \ingroup PkgTriangularSplineXu
+/// \ingroup PkgTriangularSplinePseudoAG1
 /// \brief the lengths of the umbrella's spokes (AG1.md R-11).
 enum class Umbrella_lengths { RIGID, PROPORTIONAL, EQUAL };
-/// \ingroup PkgTriangularSplineXu
+/// \ingroup PkgTriangularSplinePseudoAG1
 /// \brief the in-plane rotation of the umbrella (AG1.md R-12).
 enum class Umbrella_rotation { LEAST_SQUARES, FIRST_STAR };
-/// \ingroup PkgTriangularSplineXu
+/// \ingroup PkgTriangularSplinePseudoAG1
 /// \brief where the corner-inner points go (Xu §6.2.3 last paragraph, §6.2.4).
 enum class Inner_placement {
   NORMAL_OFFSET,    ///< the first approximation (offset along the neighbours' normals)
   CROSS_EDGE_PLANES ///< closest point on the two planes through the stars normal to the
                     ///< cross-edge normals (AG1.md R-20)
 };
-/// \ingroup PkgTriangularSplineXu
+/// \ingroup PkgTriangularSplinePseudoAG1
 /// \brief the affine relation used for the middle diamonds of an edge (Xu §6.2.2).
 enum class Edge_map {
   PARALLELOGRAM,   ///< \f$(\lambda, \mu, \nu) = (-1, 1, 1)\f$, the thesis's choice
   AVERAGED_DIAMOND ///< the mean of the two end diamonds' relations when both are convex
 };
-/// \ingroup PkgTriangularSplineXu
+/// \ingroup PkgTriangularSplinePseudoAG1
 /// \brief which flip (middle-inner) point of an edge is prescribed (Xu §4.1.3; AG1.md R-15).
 enum class Flip_rule {
   SYMMETRIC,       ///< both prescribed, then the least change of both meeting the diamond
@@ -70,7 +70,7 @@ enum class Flip_rule {
 };
 
 /*!
-  \ingroup PkgTriangularSplineXu
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief the parameters of the pseudo-AG\f$^1\f$ construction (AG1.md §4.1); the defaults are
   the preset `thesis()`.
 */
@@ -119,7 +119,7 @@ struct Pseudo_AG1_options {
   }
 };
 
-/// \ingroup PkgTriangularSplineXu
+/// \ingroup PkgTriangularSplinePseudoAG1
 /// \brief returns the options of the preset `name` ("thesis", "chapter5", "exact").
 /// \throws Invalid_input for another name
 /// \param name the preset name
@@ -136,7 +136,7 @@ inline Pseudo_AG1_options pseudo_AG1_preset(const std::string& name) {
 }
 
 /*!
-  \ingroup PkgTriangularSplineXu
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief the corner plane of a vertex and how it was obtained (Xu §6.2.1; AG1.md S3–S6).
 
   The plane is \f$\{x : \langle x - v, N\rangle = H\}\f$; \f$N\f$ is not normalized in the
@@ -161,7 +161,7 @@ struct Corner_plane {
 };
 
 /*!
-  \ingroup PkgTriangularSplineXu
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief the relations of an edge \f$e = (r, s)\f$, oriented as `canonical_halfedge(e)` (\f$r\f$ its
   source): \f$q = \lambda p + \mu r + \nu s\f$, with \f$p\f$ the apex of the face of \f$r\to s\f$
   and \f$q\f$ that of \f$s \to r\f$ (AG1.md §1.3).
@@ -205,7 +205,7 @@ bool pag1_barycentric(const typename K::Point_2& x, const typename K::Point_2& a
 } // namespace internal
 
 /*!
-  \ingroup PkgTriangularSplineXu
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief Xu's pseudo-AG\f$^1\f$ surface over a closed triangle mesh (thesis ch.\ 5–6, §6.2):
   one quintic Bézier patch per face, \f$C^0\f$ everywhere, \f$G^1\f$ at every vertex (each
   corner region lies in its corner plane), the three middle diamonds of every edge sharing one
@@ -935,7 +935,7 @@ private:
 };
 
 /*!
-  \ingroup PkgTriangularSplineXu
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief builds the pseudo-AG\f$^1\f$ surface of any closed triangle face graph.
   \tparam Kernel the kernel of the surface
   \tparam FaceGraph a model of `FaceListGraph`

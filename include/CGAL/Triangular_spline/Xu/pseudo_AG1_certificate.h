@@ -22,7 +22,7 @@ namespace CGAL {
 namespace Triangular_spline {
 
 /*!
-  \ingroup PkgTriangularSplineXu
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief the continuity of one edge of a pseudo-AG\f$^1\f$ surface (AG1.md §6 M3).
 
   Diamond \f$D_i\f$ has \f$i\f$ copies of \f$r\f$ (the source of `canonical_halfedge(e)`); \f$D_0\f$
@@ -44,7 +44,7 @@ struct Pseudo_AG1_edge_certificate {
 };
 
 /*!
-  \ingroup PkgTriangularSplineXu
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief the certificate of a pseudo-AG\f$^1\f$ surface: exact verdicts when the surface is
   exact (`Pseudo_AG1_surface::is_exact()`), residuals against a tolerance otherwise.
 */
@@ -74,7 +74,7 @@ struct Pseudo_AG1_certificate {
 };
 
 /*!
-  \ingroup PkgTriangularSplineXu
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief certifies a pseudo-AG\f$^1\f$ surface from the control nets of its patches (`patch(f)`),
   not from the construction's internal slots, so that an assembly error would show.
 
@@ -223,7 +223,7 @@ Pseudo_AG1_certificate certify_pseudo_AG1(const Surface& surface, double toleran
 }
 
 /*!
-  \ingroup PkgTriangularSplineXu
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief a quintic surface over a closed mesh (e.g. a `Surface_file`) seen through the
   quantities `certify_pseudo_AG1()` reads, all recovered from the control nets alone: the edge
   relations from the middle diamonds, the corner points and planes from the corner regions.

@@ -19,7 +19,7 @@ namespace CGAL {
 namespace Triangular_spline {
 
 /*!
-  \ingroup PkgTriangularSplineSplines
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief returns the names accepted by `thesis_polyhedron()`.
   \returns tetrahedron, sato, octahedron, cube, cube-centres, icosahedron, pentakis, torus,
   torus9, star, v-arm
@@ -217,7 +217,7 @@ Thesis_polyhedron_data<K> thesis_polyhedron_data(const std::string& name) {
 } // namespace internal
 
 /*!
-  \ingroup PkgTriangularSplineSplines
+  \ingroup PkgTriangularSplinePseudoAG1
   \brief returns the closed triangle mesh `name` of the pseudo-\f$AG^1\f$ tests (SPEC_AG1
   §8), faces counter-clockwise seen from outside.
 
