@@ -83,16 +83,17 @@ int run_certify(const std::vector<std::string>& args) {
   std::string input, report;
   double tolerance = -1.0; // < 0: exact verdict
   Command_line cl("certify");
-  cl.describe("Reads a saved spline (format 'tspline-spline 1', see the manual) and checks "
-              "Xu's C^1 conditions (3.4) and (3.5) on every interior edge with exact rational "
-              "arithmetic; or a saved pseudo-AG^1 surface (FILE.surface, 'tspline-surface 1'): "
-              "C^0 on every edge, the middle diamonds of each edge on one relation (solved from "
-              "the nets), G^1 at every vertex. The verdict is 'proof' when every condition holds exactly, "
-              "'within_tolerance' when --tolerance accepts nonzero residuals (not a proof), "
-              "'failed' otherwise. Exit status 0 for proof and within_tolerance, 1 for failed "
-              "(the failing edges are named); a spline saved by a double build fails without "
-              "--tolerance (its residuals are round-off; 'tspline c1' prints the tolerance it "
-              "used).");
+  cl.describe(
+      "Reads a saved spline (format 'tspline-spline 1', see the manual) and checks "
+      "Xu's C^1 conditions (3.4) and (3.5) on every interior edge with exact rational "
+      "arithmetic; or a saved pseudo-AG^1 surface (FILE.surface, 'tspline-surface 1'): "
+      "C^0 on every edge, the middle diamonds of each edge on one relation (solved from "
+      "the nets), G^1 at every vertex. The verdict is 'proof' when every condition holds exactly, "
+      "'within_tolerance' when --tolerance accepts nonzero residuals (not a proof), "
+      "'failed' otherwise. Exit status 0 for proof and within_tolerance, 1 for failed "
+      "(the failing edges are named); a spline saved by a double build fails without "
+      "--tolerance (its residuals are round-off; 'tspline c1' prints the tolerance it "
+      "used).");
   cl.input(input, "FILE", "the spline (.spline) or surface (.surface) to check", true);
   cl.report(report, "write the per-edge results as JSON");
   cl.number(tolerance, "tolerance", "T",

@@ -49,13 +49,11 @@ int run_pseudo_ag1(const std::vector<std::string>& args) {
   cl.input(job.input, "MESH", "the closed triangle mesh");
   cl.text(job.shape, "shape", "NAME", "a test solid instead of --input");
   cl.text(job.preset, "preset", "P", "thesis, chapter5 or exact");
-  std::string normal, placement, lengths, angles, rotation, shrink, inner, edge_map, flip,
-      offsets;
+  std::string normal, placement, lengths, angles, rotation, shrink, inner, edge_map, flip, offsets;
   double tau = 0, gain = 0, threshold = 0, scale = 0;
   bool no_recentering = false, no_compare = false, use_double = false;
   cl.text(normal, "normal", "N", "corner-plane normal: area, average or centroid");
-  cl.number(tau, "tau", "T", "plane position: 0 through the vertex, 1 through the centroid",
-            false);
+  cl.number(tau, "tau", "T", "plane position: 0 through the vertex, 1 through the centroid", false);
   cl.number(gain, "undulation-gain", "K", "raise/lower gain (0 disables)", false);
   cl.number(threshold, "threshold-deg", "DEG", "mean dihedral angle threshold (144)", false);
   cl.text(placement, "placement", "P", "stars: umbrella or projection");

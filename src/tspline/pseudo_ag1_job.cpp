@@ -132,8 +132,7 @@ std::string fixed(double x, int digits = 2) {
 }
 
 template <class K>
-Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out,
-           Json& report) {
+Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out, Json& report) {
   using Mesh = CGAL::Surface_mesh<typename K::Point_3>;
   Stopwatch clock;
   Json seconds = Json::object();
@@ -257,7 +256,8 @@ Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out
       const auto h = TS::canonical_halfedge(e, surface.mesh());
       const auto& E = c.per_edge[e];
       Json j = Json::object();
-      j["vertices"] = {std::size_t(surface.mesh().source(h)), std::size_t(surface.mesh().target(h))};
+      j["vertices"] = {std::size_t(surface.mesh().source(h)),
+                       std::size_t(surface.mesh().target(h))};
       j["max_jump_deg"] = measures.edge_max_jump_deg[e];
       j["mean_jump_deg"] = measures.edge_mean_jump_deg[e];
       j["c0"] = E.c0;
@@ -302,8 +302,9 @@ Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out
   seconds["outputs"] = clock.lap();
 
   out << "pseudo-AG1 surface (preset " << job.preset
-      << (surface.is_exact() ? ", exact rational arithmetic" : ", double") << "): " << summary.vertices << " vertices, " << summary.edges << " edges, "
-      << summary.faces << " faces";
+      << (surface.is_exact() ? ", exact rational arithmetic" : ", double")
+      << "): " << summary.vertices << " vertices, " << summary.edges << " edges, " << summary.faces
+      << " faces";
   if (summary.components.size() == 1)
     out << ", genus " << summary.components[0].genus;
   else
@@ -376,10 +377,13 @@ Surface_certify_result run_certify_surface_job(const std::string& path, double t
   std::ostringstream tol;
   tol << "tolerance " << c.tolerance;
   out << "pseudo-AG^1 certificate of " << path << " ("
-      << (c.exact ? std::string("exact rational arithmetic") : tol.str()) << "): C^0 " << c.c0_edges << "/" << c.edges << " edges, middle diamonds "
-      << c.middle_edges << "/" << c.edges << ", G^1 at " << c.g1_vertices << "/" << c.vertices
-      << " vertices, AG^1 " << c.ag1_edges << "/" << c.edges << " edges: "
-      << (verdict == "proof" ? "PROVED" : verdict == "failed" ? "FAILED" : "within tolerance")
+      << (c.exact ? std::string("exact rational arithmetic") : tol.str()) << "): C^0 " << c.c0_edges
+      << "/" << c.edges << " edges, middle diamonds " << c.middle_edges << "/" << c.edges
+      << ", G^1 at " << c.g1_vertices << "/" << c.vertices << " vertices, AG^1 " << c.ag1_edges
+      << "/" << c.edges << " edges: "
+      << (verdict == "proof"    ? "PROVED"
+          : verdict == "failed" ? "FAILED"
+                                : "within tolerance")
       << "\n";
   std::size_t shown = 0;
   for (const auto& j : failing)
@@ -440,8 +444,8 @@ Json run_pseudo_ag1_job(const Pseudo_ag1_job& given, std::ostream& out) {
   options["levels"] = job.levels;
   report["options"] = options;
 
-  Json seconds = job.exact ? build<Exact>(job, input, out, report)
-                           : build<Epick>(job, input, out, report);
+  Json seconds =
+      job.exact ? build<Exact>(job, input, out, report) : build<Epick>(job, input, out, report);
 
   if (job.compare) {
     progress("pseudo-ag1", "comparing", input.number_of_faces() > 20000);

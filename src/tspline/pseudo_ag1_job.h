@@ -14,19 +14,19 @@
 namespace tspline {
 
 struct Pseudo_ag1_job {
-  std::string input;  // a closed triangle mesh (.off/.ply/.obj/.stl); or
-  std::string shape;  // a solid of the thesis or of the tests (see --help)
+  std::string input; // a closed triangle mesh (.off/.ply/.obj/.stl); or
+  std::string shape; // a solid of the thesis or of the tests (see --help)
   std::string preset = "thesis";
   CGAL::Triangular_spline::Pseudo_AG1_options options; // the preset with the overrides applied
-  bool exact = false;  // exact rational arithmetic (needs rational options)
-  int samples = 15;    // interior samples per edge for the normal jumps
-  int levels = -1;     // 4-splits per face of the measured tessellation; < 0: automatic
-  int mesh_levels = 3; // 4-splits per face of --output
-  bool compare = true; // measure PN triangles and Fang's order-1 blend on the same mesh
+  bool exact = false;    // exact rational arithmetic (needs rational options)
+  int samples = 15;      // interior samples per edge for the normal jumps
+  int levels = -1;       // 4-splits per face of the measured tessellation; < 0: automatic
+  int mesh_levels = 3;   // 4-splits per face of --output
+  bool compare = true;   // measure PN triangles and Fang's order-1 blend on the same mesh
   bool per_edge = false; // list every edge in the report
-  std::string mesh;    // tessellated surface (.ply/.off/.obj); empty: none
-  std::string save;    // .surface file; empty: none
-  std::string report;  // JSON report; empty: none
+  std::string mesh;      // tessellated surface (.ply/.off/.obj); empty: none
+  std::string save;      // .surface file; empty: none
+  std::string report;    // JSON report; empty: none
 };
 
 // Builds, certifies and measures the surface, compares, writes the requested files, prints a

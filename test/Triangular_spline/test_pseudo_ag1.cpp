@@ -635,7 +635,8 @@ TEST(PseudoAG1SurfaceFile, RotatedFaceLinesAreReindexed) {
       patch >> x;
     std::string rotated;
     for (const auto& index : TS::multi_indices(5)) {
-      // new order (b, c, a): the point of index (i, j, k) over (b, c, a) is (k, i, j) over (a, b, c)
+      // new order (b, c, a): the point of index (i, j, k) over (b, c, a) is (k, i, j) over (a, b,
+      // c)
       const std::size_t old = TS::linear_index(TS::Multi_index{index[2], index[0], index[1]});
       for (int d = 0; d < 3; ++d)
         rotated += (rotated.empty() ? "" : " ") + numbers[3 * old + std::size_t(d)];
@@ -649,7 +650,8 @@ TEST(PseudoAG1SurfaceFile, RotatedFaceLinesAreReindexed) {
   // the read faces start at b: compare the points with the same powers of the same vertices
   auto corners = [](const Mesh<Exact>& m, Mesh<Exact>::Face_index f) {
     const auto h = m.halfedge(f);
-    return std::array<Mesh<Exact>::Vertex_index, 3>{{m.target(h), m.target(m.next(h)), m.source(h)}};
+    return std::array<Mesh<Exact>::Vertex_index, 3>{
+        {m.target(h), m.target(m.next(h)), m.source(h)}};
   };
   std::size_t rotated_faces = 0;
   for (auto f : s.mesh().faces()) {
@@ -661,7 +663,8 @@ TEST(PseudoAG1SurfaceFile, RotatedFaceLinesAreReindexed) {
         for (int b = 0; b < 3; ++b)
           if (cr[std::size_t(a)] == cs[std::size_t(b)])
             in_s[b] = index[a];
-      EXPECT_EQ(read.control_net(f)[TS::linear_index(index)], s.control_net(f)[TS::linear_index(in_s)]);
+      EXPECT_EQ(read.control_net(f)[TS::linear_index(index)],
+                s.control_net(f)[TS::linear_index(in_s)]);
     }
   }
   EXPECT_EQ(rotated_faces, s.mesh().number_of_faces());

@@ -8,7 +8,6 @@
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -139,9 +138,14 @@ Closed_mesh_summary prepare_closed_triangle_mesh(CGAL::Surface_mesh<Point_3>& me
                           " has a single face (meshes with border are not supported)");
   if (!CGAL::is_valid_polygon_mesh(mesh))
     throw Invalid_input(prefix + "the mesh is not a valid polygon mesh");
+  // A vertex is manifold iff circulating around it meets every halfedge pointing to it
+  // (PMP::is_non_manifold_vertex() costs O(V) per call in CGAL 5.5: quadratic here).
+  std::vector<std::size_t> incoming(mesh.number_of_vertices(), 0);
+  for (auto h : mesh.halfedges())
+    ++incoming[mesh.target(h)];
   for (auto v : mesh.vertices()) {
     const std::string name = "vertex " + std::to_string(std::size_t(v));
-    if (PMP::is_non_manifold_vertex(v, mesh))
+    if (incoming[v] != std::size_t(mesh.degree(v)))
       throw Invalid_input(prefix + "the mesh is not manifold at " + name);
     if (mesh.degree(v) < 3)
       throw Invalid_input(prefix + name + " has valence " + std::to_string(mesh.degree(v)) +

@@ -190,15 +190,14 @@ Surface_file<Kernel> read_surface_file(std::istream& input, const std::string& s
   if (type != "exact" && type != "double")
     reader.fail("number_type must be exact or double, not " + internal::quoted(type));
   const bool exact_file = type == "exact";
-  const std::size_t V = reader.count(reader.keyword_value("vertices"), "vertex count",
-                                     std::size_t(1) << 32);
+  const std::size_t V =
+      reader.count(reader.keyword_value("vertices"), "vertex count", std::size_t(1) << 32);
   reader.check_fits(V, 6, "vertex count");
   Mesh mesh;
   mesh.reserve(typename Mesh::size_type(std::min(V, internal::spline_file_reserve_limit)), 0, 0);
   for (std::size_t i = 0; i < V; ++i) {
-    const auto t = reader.data_line("3 numbers (x y z) for vertex " + std::to_string(i) + " of " +
-                                        std::to_string(V),
-                                    3);
+    const auto t = reader.data_line(
+        "3 numbers (x y z) for vertex " + std::to_string(i) + " of " + std::to_string(V), 3);
     mesh.add_vertex(typename Kernel::Point_3(reader.template number<FT>(t[0], exact_file),
                                              reader.template number<FT>(t[1], exact_file),
                                              reader.template number<FT>(t[2], exact_file)));
@@ -209,17 +208,17 @@ Surface_file<Kernel> read_surface_file(std::istream& input, const std::string& s
   std::vector<std::array<std::size_t, 3>> faces;
   faces.reserve(std::min(F, internal::spline_file_reserve_limit));
   for (std::size_t f = 0; f < F; ++f) {
-    const auto t = reader.data_line("3 vertex indices for face " + std::to_string(f) + " of " +
-                                        std::to_string(F),
-                                    3);
+    const auto t = reader.data_line(
+        "3 vertex indices for face " + std::to_string(f) + " of " + std::to_string(F), 3);
     std::array<std::size_t, 3> face;
     for (std::size_t i = 0; i < 3; ++i)
       face[i] = reader.count(t[i], "vertex index", V == 0 ? 0 : V - 1);
     if (face[0] == face[1] || face[1] == face[2] || face[0] == face[2])
       reader.fail("face " + std::to_string(f) + " repeats a vertex");
-    const auto added = mesh.add_face(typename Mesh::Vertex_index(typename Mesh::size_type(face[0])),
-                                     typename Mesh::Vertex_index(typename Mesh::size_type(face[1])),
-                                     typename Mesh::Vertex_index(typename Mesh::size_type(face[2])));
+    const auto added =
+        mesh.add_face(typename Mesh::Vertex_index(typename Mesh::size_type(face[0])),
+                      typename Mesh::Vertex_index(typename Mesh::size_type(face[1])),
+                      typename Mesh::Vertex_index(typename Mesh::size_type(face[2])));
     if (added == Mesh::null_face())
       reader.fail("face " + std::to_string(f) +
                   " cannot be added (non-manifold or inconsistently oriented mesh)");
@@ -240,8 +239,8 @@ Surface_file<Kernel> read_surface_file(std::istream& input, const std::string& s
                              reader.template number<FT>(t[3 * i + 1], exact_file),
                              reader.template number<FT>(t[3 * i + 2], exact_file));
     // re-index from the file's (a, b, c) to the mesh's vertices_around_face order
-    const auto corners = internal::face_corners(mesh, typename Mesh::Face_index(
-                                                          typename Mesh::size_type(f)));
+    const auto corners =
+        internal::face_corners(mesh, typename Mesh::Face_index(typename Mesh::size_type(f)));
     int shift = 0;
     while (std::size_t(corners[0]) != faces[f][std::size_t(shift)])
       ++shift;

@@ -144,10 +144,11 @@ inline Pseudo_AG1_options pseudo_AG1_preset(const std::string& name) {
 */
 template <class Kernel>
 struct Corner_plane {
-  typename Kernel::Vector_3 normal{CGAL::NULL_VECTOR};   ///< \f$N_v\f$ (any positive length)
-  typename Kernel::FT offset;         ///< \f$H_v\f$
-  typename Kernel::Vector_3 centroid{CGAL::NULL_VECTOR}; ///< \f$C_v\f$, the mean of the first-approximation stars
-  typename Kernel::Vector_3 corner{CGAL::NULL_VECTOR};   ///< \f$z_v\f$
+  typename Kernel::Vector_3 normal{CGAL::NULL_VECTOR}; ///< \f$N_v\f$ (any positive length)
+  typename Kernel::FT offset;                          ///< \f$H_v\f$
+  typename Kernel::Vector_3 centroid{
+      CGAL::NULL_VECTOR}; ///< \f$C_v\f$, the mean of the first-approximation stars
+  typename Kernel::Vector_3 corner{CGAL::NULL_VECTOR}; ///< \f$z_v\f$
   /// the umbrella: chart coordinates of \f$S_{v\to w_i} - z_v\f$ in ring order
   std::vector<typename Kernel::Point_2> umbrella;
   Corner_plane_normal normal_used = Corner_plane_normal::AREA_WEIGHTED; ///< after fallbacks

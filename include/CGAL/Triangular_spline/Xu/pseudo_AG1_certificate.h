@@ -270,8 +270,8 @@ public:
     for (auto e : mesh.edges()) {
       const auto h = canonical_halfedge(e, mesh), o = mesh.opposite(h);
       const auto A = mesh.face(h), B = mesh.face(o);
-      const std::array<int, 3> la{
-          {local(A, mesh.target(mesh.next(h))), local(A, mesh.source(h)), local(A, mesh.target(h))}},
+      const std::array<int, 3> la{{local(A, mesh.target(mesh.next(h))), local(A, mesh.source(h)),
+                                   local(A, mesh.target(h))}},
           lb{{local(B, mesh.target(mesh.next(o))), local(B, mesh.source(h)),
               local(B, mesh.target(h))}};
       const auto& netA = surface.control_net(A);
