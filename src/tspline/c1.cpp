@@ -3,6 +3,8 @@
 #include "c1_job.h"
 #include "command_line.h"
 #include "commands.h"
+#include "files.h"
+#include "pseudo_ag1_job.h"
 
 #include <iostream>
 #include <string>
@@ -87,22 +89,33 @@ int run_certify(const std::vector<std::string>& args) {
   Command_line cl("certify");
   cl.describe("Reads a saved spline (format 'tspline-spline 1', see the manual) and checks "
               "Xu's C^1 conditions (3.4) and (3.5) on every interior edge with exact rational "
-              "arithmetic. The verdict is 'proof' when every condition holds exactly, "
+              "arithmetic; or a saved pseudo-AG^1 surface (FILE.surface, 'tspline-surface 1'): "
+              "C^0 on every edge, the middle diamonds of each edge on one relation (solved from "
+              "the nets), G^1 at every vertex. The verdict is 'proof' when every condition holds exactly, "
               "'within_tolerance' when --tolerance accepts nonzero residuals (not a proof), "
               "'failed' otherwise. Exit status 0 for proof and within_tolerance, 1 for failed "
               "(the failing edges are named); a spline saved by a double build fails without "
               "--tolerance (its residuals are round-off; 'tspline c1' prints the tolerance it "
               "used).");
-  cl.input(input, "FILE.spline", "the spline to check", true);
+  cl.input(input, "FILE", "the spline (.spline) or surface (.surface) to check", true);
   cl.report(report, "write the per-edge results as JSON");
   cl.number(tolerance, "tolerance", "T",
             "accept edges whose exact residual is at most T (for splines built in double)", false);
   if (!cl.parse(args))
     return 0;
   if (input.empty())
-    throw Usage_error("missing argument FILE.spline (or --input FILE.spline)");
+    throw Usage_error("missing argument FILE.spline (or --input FILE.spline, or a .surface)");
   if (cl.given("tolerance") && !(tolerance >= 0))
     throw Usage_error("--tolerance must be a finite number >= 0");
+  if (lowercase_extension(input) == "surface") {
+    const Surface_certify_result result =
+        run_certify_surface_job(input, tolerance, cl.summary_stream());
+    if (!report.empty())
+      write_json_report(report, result.report);
+    if (!result.certified)
+      std::cerr << "tspline certify: NOT pseudo-AG^1: the failing edges are listed above\n";
+    return result.certified ? 0 : 1;
+  }
   const Certify_result result = run_certify_job(input, tolerance, cl.summary_stream());
   if (!report.empty())
     write_json_report(report, result.report);

@@ -1,0 +1,481 @@
+// Xu's pseudo-AG^1 pipeline: read or generate a closed triangle mesh -> surface (double, or
+// exact rationals for the rational presets) -> exact or residual certificate -> normal jumps
+// and shape measures -> the same measures for PN triangles and Fang's order-1 blend on the
+// same mesh -> outputs.
+
+#include "pseudo_ag1_job.h"
+#include "files.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
+#include <CGAL/Triangular_spline/Comparators/PN_triangles.h>
+#include <CGAL/Triangular_spline/IO/mesh_io.h>
+#include <CGAL/Triangular_spline/IO/surface_file.h>
+#include <CGAL/Triangular_spline/Xu/Pseudo_AG1_surface.h>
+#include <CGAL/Triangular_spline/Xu/pseudo_AG1_certificate.h>
+#include <CGAL/Triangular_spline/Xu/thesis_polyhedra.h>
+#include <CGAL/Triangular_spline/closed_surface.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace tspline {
+
+namespace {
+
+namespace TS = CGAL::Triangular_spline;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Exact = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+using Input_mesh = CGAL::Surface_mesh<Epick::Point_3>;
+
+Input_mesh read_closed_mesh(const std::string& path) {
+  std::vector<Epick::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  TS::read_mesh_soup(path, points, polygons); // counts, indices, finite coordinates
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    if (polygons[f].size() != 3)
+      throw TS::Invalid_input(path + ": face " + std::to_string(f) + " has " +
+                              std::to_string(polygons[f].size()) +
+                              " vertices (pseudo-AG1 needs a triangle mesh)");
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw TS::Invalid_input(path + ": not a manifold, consistently oriented triangle mesh (an "
+                                   "edge has more than two faces, a vertex several umbrellas, "
+                                   "or neighbouring faces disagree on the orientation)");
+  Input_mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  return mesh;
+}
+
+// Fang's blend as a sampler of the closed-surface measures: face parameters from the
+// barycentric weights of the face's corners.
+class Blend_sampler {
+public:
+  Blend_sampler(const TS::Mesh_blending_surface<Epick::Point_3>& blend, const Input_mesh& mesh)
+      : m_blend(blend), m_mesh(mesh) {}
+  TS::Surface_sample operator()(Input_mesh::Face_index f, const std::array<double, 3>& w) const {
+    const auto h = m_mesh.halfedge(f);
+    const std::array<Input_mesh::Vertex_index, 3> corners{
+        {m_mesh.target(h), m_mesh.target(m_mesh.next(h)), m_mesh.source(h)}};
+    double a = 0, b = 0;
+    const std::size_t face = std::size_t(f);
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::size_t v = m_blend.face_vertex(face, c);
+      double weight = 0;
+      for (std::size_t k = 0; k < 3; ++k)
+        if (std::size_t(corners[k]) == v)
+          weight = w[k];
+      a += weight * m_blend.corner_parameter(face, c)[0];
+      b += weight * m_blend.corner_parameter(face, c)[1];
+    }
+    TS::Surface_sample s;
+    const auto p = m_blend.evaluate(f, a, b);
+    s.point = {{p.x(), p.y(), p.z()}};
+    const TS::Surface_curvature c = TS::surface_curvature(m_blend.derivatives(face, a, b));
+    s.normal = c.normal;
+    s.gaussian = c.gaussian;
+    s.regular = c.regular;
+    return s;
+  }
+
+private:
+  const TS::Mesh_blending_surface<Epick::Point_3>& m_blend;
+  const Input_mesh& m_mesh;
+};
+
+// PN triangles as a surface of patches (the sampler's interface).
+struct PN_surface {
+  using Patch = TS::Bezier_triangle<Epick, Epick::Vector_3>;
+  std::vector<Patch> patches;
+  const Patch& patch(Input_mesh::Face_index f) const { return patches[f]; }
+};
+
+Json measures_json(const TS::Closed_surface_measures& m, bool self_intersections_checked) {
+  Json j = Json::object();
+  Json jump = Json::object();
+  jump["max"] = m.max_jump_deg;
+  jump["mean_edge_max"] = m.mean_edge_max_jump_deg;
+  jump["mean"] = m.mean_jump_deg;
+  jump["rms"] = m.rms_jump_deg;
+  jump["p95"] = m.p95_jump_deg;
+  jump["max_unoriented"] = m.max_unoriented_jump_deg;
+  jump["vertex_max"] = m.vertex_max_jump_deg;
+  jump["input_mean_bend"] = m.mean_input_bend_deg;
+  j["normal_jump_deg"] = jump;
+  Json shape = Json::object();
+  shape["volume_ratio"] = m.volume_ratio;
+  shape["hausdorff_rel"] = m.hausdorff_rel;
+  shape["rms_rel"] = m.rms_distance_rel;
+  shape["inside_fraction"] = m.inside_fraction;
+  shape["folded_samples"] = m.folded_samples;
+  shape["singular_samples"] = m.singular_samples;
+  if (self_intersections_checked)
+    shape["self_intersecting"] = m.self_intersecting;
+  else
+    shape["self_intersecting"] = nullptr;
+  shape["K_min"] = m.gaussian_min;
+  shape["K_max"] = m.gaussian_max;
+  j["shape"] = shape;
+  return j;
+}
+
+std::string fixed(double x, int digits = 2) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << x;
+  return s.str();
+}
+
+template <class K>
+Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out,
+           Json& report) {
+  using Mesh = CGAL::Surface_mesh<typename K::Point_3>;
+  Stopwatch clock;
+  Json seconds = Json::object();
+  Mesh mesh;
+  {
+    std::vector<typename Mesh::Vertex_index> map;
+    for (auto v : input.vertices()) {
+      const auto& p = input.point(v);
+      map.push_back(mesh.add_vertex(typename K::Point_3(p.x(), p.y(), p.z())));
+    }
+    for (auto f : input.faces()) {
+      std::vector<typename Mesh::Vertex_index> t;
+      for (auto v : CGAL::vertices_around_face(input.halfedge(f), input))
+        t.push_back(map[std::size_t(v)]);
+      mesh.add_face(t);
+    }
+  }
+  progress("pseudo-ag1", "building the surface", input.number_of_faces() > 20000);
+  const TS::Pseudo_AG1_surface<K> surface(mesh, job.options);
+  seconds["build"] = clock.lap();
+  const auto& summary = surface.mesh_summary();
+  Json m = Json::object();
+  m["vertices"] = summary.vertices;
+  m["edges"] = summary.edges;
+  m["faces"] = summary.faces;
+  m["components"] = summary.components.size();
+  long euler = 0;
+  for (const auto& c : summary.components)
+    euler += c.euler;
+  m["euler"] = euler;
+  m["genus"] = summary.components.size() == 1 ? Json(summary.components[0].genus) : Json(nullptr);
+  m["reoriented"] = summary.reoriented;
+  report["mesh"] = m;
+  report["faces"] = summary.faces;
+  report["exact"] = surface.is_exact();
+
+  progress("pseudo-ag1", "certifying", input.number_of_faces() > 20000);
+  const TS::Pseudo_AG1_certificate c = TS::certify_pseudo_AG1(surface);
+  seconds["certify"] = clock.lap();
+  Json cert = Json::object();
+  cert["exact"] = c.exact;
+  cert["tolerance"] = c.tolerance;
+  cert["edges"] = c.edges;
+  cert["c0_edges"] = c.c0_edges;
+  cert["middle_edges"] = c.middle_edges;
+  cert["ag1_edges"] = c.ag1_edges;
+  cert["inadmissible_edges"] = c.inadmissible_edges;
+  cert["coplanar_vertices"] = c.coplanar_vertices;
+  cert["g1_vertices"] = c.g1_vertices;
+  cert["max_edge_residual"] = c.max_edge_residual;
+  cert["max_coplanarity"] = c.max_coplanarity;
+  cert["pseudo_ag1"] = c.pseudo_AG1();
+  report["certificate"] = cert;
+  report["certified_c0"] = c.c0_edges == c.edges;
+  report["vertex_g1"] = c.g1_vertices == c.vertices;
+  report["ag1_edges"] = c.ag1_edges;
+
+  progress("pseudo-ag1", "measuring", input.number_of_faces() > 20000);
+  const std::size_t tessellated = summary.faces << (2 * job.levels);
+  const bool check_self = tessellated <= 400000;
+  const TS::Patch_sampler<TS::Pseudo_AG1_surface<K>> sampler(surface);
+  const TS::Closed_surface_measures measures =
+      TS::measure_closed_surface(surface.mesh(), sampler, job.samples, job.levels, check_self);
+  seconds["measure"] = clock.lap();
+  const Json mj = measures_json(measures, check_self);
+  report["normal_jump_deg"] = mj["normal_jump_deg"];
+  report["max_normal_jump_deg"] = measures.max_jump_deg;
+  report["mean_normal_jump_deg"] = measures.mean_jump_deg;
+  report["shape"] = mj["shape"];
+  report["volume_ratio"] = measures.volume_ratio;
+
+  // AG^1 defect and undulation (M4, M6)
+  double defect_max = 0, defect_sum = 0, worst_dip = -1e300;
+  std::size_t dipping = 0;
+  for (auto e : surface.mesh().edges()) {
+    const auto& E = surface.edge_relation(e);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double d = std::max(std::abs(CGAL::to_double(E.end_r[i] - E.relation[i])),
+                                std::abs(CGAL::to_double(E.end_s[i] - E.relation[i])));
+      defect_max = std::max(defect_max, d);
+      defect_sum += d / 3;
+    }
+    const double dip = surface.dip(e);
+    worst_dip = std::max(worst_dip, dip);
+    dipping += dip > 0;
+  }
+  Json defect = Json::object();
+  defect["max"] = defect_max;
+  defect["mean"] = summary.edges ? defect_sum / double(summary.edges) : 0.0;
+  report["ag1_defect"] = defect;
+  Json undulation = Json::object();
+  undulation["dipping_edges"] = dipping;
+  undulation["worst_dip"] = worst_dip;
+  report["undulation"] = undulation;
+
+  Json flags = Json::object();
+  std::size_t recentred = 0, folded = 0, equalised = 0, fallback = 0, inverted = 0, averaged = 0;
+  for (auto v : surface.mesh().vertices()) {
+    const auto& p = surface.corner_plane(v);
+    recentred += p.recentred;
+    folded += p.folded_projection;
+    equalised += p.equalised;
+    fallback += p.normal_fallback;
+    inverted += p.inverted_corner;
+  }
+  for (auto e : surface.mesh().edges())
+    averaged += surface.edge_relation(e).averaged_fallback;
+  flags["recentred_vertices"] = recentred;
+  flags["folded_projections"] = folded;
+  flags["equalised_umbrellas"] = equalised;
+  flags["normal_fallbacks"] = fallback;
+  flags["inverted_corners"] = inverted;
+  flags["averaged_map_fallbacks"] = averaged;
+  flags["shrinking_rounds"] = surface.shrinking_rounds();
+  flags["reoriented_components"] = summary.reoriented;
+  report["flags"] = flags;
+
+  if (job.per_edge) {
+    Json edges = Json::array();
+    for (auto e : surface.mesh().edges()) {
+      const auto h = TS::canonical_halfedge(e, surface.mesh());
+      const auto& E = c.per_edge[e];
+      Json j = Json::object();
+      j["vertices"] = {std::size_t(surface.mesh().source(h)), std::size_t(surface.mesh().target(h))};
+      j["max_jump_deg"] = measures.edge_max_jump_deg[e];
+      j["mean_jump_deg"] = measures.edge_mean_jump_deg[e];
+      j["c0"] = E.c0;
+      j["middle"] = E.middle;
+      j["ag1"] = E.ag1;
+      j["dip"] = surface.dip(e);
+      edges.push_back(j);
+    }
+    report["per_edge"] = edges;
+  }
+
+  if (!job.save.empty()) {
+    std::ofstream file = open_output(job.save);
+    TS::write_surface_file(file, surface);
+    file.close();
+    if (!file)
+      throw std::runtime_error("writing '" + job.save + "' failed");
+    report["saved"] = job.save;
+  }
+  if (!job.mesh.empty()) {
+    const TS::Closed_tessellation t =
+        TS::tessellate_closed_surface(surface.mesh(), sampler, job.mesh_levels);
+    CGAL::Surface_mesh<Epick::Point_3> tm = t.mesh;
+    auto normal = tm.add_property_map<Input_mesh::Vertex_index, Epick::Vector_3>(
+                        "v:normal", Epick::Vector_3(0, 0, 0))
+                      .first;
+    auto gaussian =
+        tm.add_property_map<Input_mesh::Vertex_index, double>("v:gaussian_curvature", 0.).first;
+    for (auto v : tm.vertices()) {
+      const auto& n = t.normals[std::size_t(v)];
+      normal[v] = Epick::Vector_3(n[0], n[1], n[2]);
+      gaussian[v] = std::isfinite(t.gaussian[std::size_t(v)]) ? t.gaussian[std::size_t(v)] : 0.0;
+    }
+    TS::write_mesh(job.mesh, tm);
+    Json o = Json::object();
+    o["path"] = job.mesh;
+    o["levels"] = job.mesh_levels;
+    o["vertices"] = tm.number_of_vertices();
+    o["faces"] = tm.number_of_faces();
+    report["output"] = o;
+  }
+  seconds["outputs"] = clock.lap();
+
+  out << "pseudo-AG1 surface (preset " << job.preset
+      << (surface.is_exact() ? ", exact rational arithmetic" : ", double") << "): " << summary.vertices << " vertices, " << summary.edges << " edges, "
+      << summary.faces << " faces";
+  if (summary.components.size() == 1)
+    out << ", genus " << summary.components[0].genus;
+  else
+    out << ", " << summary.components.size() << " components";
+  if (summary.reoriented)
+    out << " (" << summary.reoriented << " reoriented outward)";
+  out << "\n";
+  out << "certificate (" << (c.exact ? "exact rational arithmetic" : "residuals") << "): C^0 "
+      << c.c0_edges << "/" << c.edges << " edges, middle diamonds " << c.middle_edges << "/"
+      << c.edges << ", G^1 at " << c.g1_vertices << "/" << c.vertices << " vertices, AG^1 "
+      << c.ag1_edges << "/" << c.edges << " edges: "
+      << (c.pseudo_AG1() ? (c.exact ? "pseudo-AG^1 PROVED" : "pseudo-AG^1 (within tolerance)")
+                         : "NOT pseudo-AG^1")
+      << "\n";
+  out << "normal jump across edges: max " << fixed(measures.max_jump_deg) << " deg, mean "
+      << fixed(measures.mean_jump_deg) << " deg (input bend " << fixed(measures.mean_input_bend_deg)
+      << " deg); at vertices " << std::setprecision(2) << std::scientific
+      << measures.vertex_max_jump_deg << std::defaultfloat << " deg\n";
+  out << "shape: volume ratio " << fixed(measures.volume_ratio, 3) << ", distance to input "
+      << fixed(100 * measures.hausdorff_rel) << "% of the diagonal, dipping edges " << dipping
+      << "/" << summary.edges;
+  if (recentred + folded + equalised + fallback + inverted + averaged)
+    out << "; flags: " << recentred << " re-centred, " << folded << " folded projections, "
+        << equalised << " equalised, " << fallback << " normal fallbacks, " << inverted
+        << " inverted corners, " << averaged << " averaged-map fallbacks";
+  out << "\n";
+  return seconds;
+}
+
+} // namespace
+
+Surface_certify_result run_certify_surface_job(const std::string& path, double tolerance,
+                                               std::ostream& out) {
+  std::ifstream in = open_input(path);
+  const TS::Surface_file<Exact> file = TS::read_surface_file<Exact>(in, path);
+  const TS::Pseudo_AG1_view<TS::Surface_file<Exact>> view(file);
+  const TS::Pseudo_AG1_certificate c = TS::certify_pseudo_AG1(view, tolerance);
+  Surface_certify_result result;
+  result.certified = c.pseudo_AG1();
+  const std::string verdict = !result.certified ? "failed" : c.exact ? "proof" : "within_tolerance";
+  Json& r = result.report;
+  r["input"] = path;
+  r["kind"] = "pseudo-AG1 surface";
+  r["number_type"] = file.exact_numbers() ? "exact" : "double";
+  r["verdict"] = verdict;
+  r["exact"] = c.exact;
+  r["tolerance"] = c.tolerance;
+  r["edges"] = c.edges;
+  r["c0_edges"] = c.c0_edges;
+  r["middle_edges"] = c.middle_edges;
+  r["ag1_edges"] = c.ag1_edges;
+  r["vertices"] = c.vertices;
+  r["g1_vertices"] = c.g1_vertices;
+  r["coplanar_vertices"] = c.coplanar_vertices;
+  r["max_edge_residual"] = c.max_edge_residual;
+  Json failing = Json::array();
+  for (auto e : file.mesh().edges()) {
+    const auto& E = c.per_edge[e];
+    if (E.middle)
+      continue;
+    const auto h = TS::canonical_halfedge(e, file.mesh());
+    Json j = Json::object();
+    j["vertices"] = {std::size_t(file.mesh().source(h)), std::size_t(file.mesh().target(h))};
+    j["c0"] = E.c0;
+    j["relation_determined"] = view.relation_determined(e);
+    j["residual"] = E.middle_residual;
+    failing.push_back(j);
+  }
+  r["failing_edges"] = failing;
+  std::ostringstream tol;
+  tol << "tolerance " << c.tolerance;
+  out << "pseudo-AG^1 certificate of " << path << " ("
+      << (c.exact ? std::string("exact rational arithmetic") : tol.str()) << "): C^0 " << c.c0_edges << "/" << c.edges << " edges, middle diamonds "
+      << c.middle_edges << "/" << c.edges << ", G^1 at " << c.g1_vertices << "/" << c.vertices
+      << " vertices, AG^1 " << c.ag1_edges << "/" << c.edges << " edges: "
+      << (verdict == "proof" ? "PROVED" : verdict == "failed" ? "FAILED" : "within tolerance")
+      << "\n";
+  std::size_t shown = 0;
+  for (const auto& j : failing)
+    if (shown++ < 10)
+      out << "  edge " << j["vertices"][0] << "-" << j["vertices"][1]
+          << (j["c0"].get<bool>() ? ": middle diamonds disagree" : ": not C^0") << ", residual "
+          << j["residual"].get<double>() << "\n";
+  if (!result.certified && c.exact && !file.exact_numbers())
+    out << "  the file holds doubles (a double build): its residuals are round-off; certify it "
+           "with --tolerance T (absolute), or build it exactly (--preset exact)\n";
+  return result;
+}
+
+std::string pseudo_ag1_shape_names() {
+  std::string s;
+  for (const std::string& name : TS::thesis_polyhedron_names())
+    s += (s.empty() ? "" : ", ") + name;
+  return s;
+}
+
+Json run_pseudo_ag1_job(const Pseudo_ag1_job& given, std::ostream& out) {
+  Stopwatch clock, total;
+  Pseudo_ag1_job job = given;
+  Json report = Json::object();
+  Input_mesh input;
+  if (!job.shape.empty()) {
+    input = TS::thesis_polyhedron<Epick>(job.shape);
+    report["input"] = "shape:" + job.shape;
+  } else {
+    input = read_closed_mesh(job.input);
+    report["input"] = job.input;
+  }
+  if (job.levels < 0) {
+    job.levels = 3;
+    while (job.levels > 0 && (input.number_of_faces() << (2 * job.levels)) > 1000000)
+      --job.levels;
+  }
+  Json options = Json::object();
+  const auto& o = job.options;
+  options["preset"] = job.preset;
+  options["normal"] = o.normal == TS::Corner_plane_normal::CENTROID  ? "centroid"
+                      : o.normal == TS::Corner_plane_normal::AVERAGE ? "average"
+                                                                     : "area";
+  options["tau"] = o.plane_position;
+  options["undulation_gain"] = o.undulation_gain;
+  options["threshold_deg"] = o.undulation_threshold * 180 / CGAL_PI;
+  options["placement"] = o.placement == TS::Star_placement::UMBRELLA ? "umbrella" : "projection";
+  options["recentering"] = o.recentering;
+  options["star_scale"] = o.star_scale;
+  options["shrink"] = o.automatic_shrinking ? "auto" : "none";
+  options["offsets"] = {o.offsets[0], o.offsets[1], o.offsets[2]};
+  options["inner"] = o.inner == TS::Inner_placement::NORMAL_OFFSET ? "offset" : "cross-edge";
+  options["edge_map"] = o.edge_map == TS::Edge_map::PARALLELOGRAM ? "parallelogram" : "averaged";
+  options["flip"] = o.flips == TS::Flip_rule::SYMMETRIC     ? "symmetric"
+                    : o.flips == TS::Flip_rule::LARGER_FACE ? "larger-face"
+                                                            : "lower-index";
+  options["samples"] = job.samples;
+  options["levels"] = job.levels;
+  report["options"] = options;
+
+  Json seconds = job.exact ? build<Exact>(job, input, out, report)
+                           : build<Epick>(job, input, out, report);
+
+  if (job.compare) {
+    progress("pseudo-ag1", "comparing", input.number_of_faces() > 20000);
+    Json comparison = Json::object();
+    const bool check_self = (input.number_of_faces() << (2 * job.levels)) <= 400000;
+    PN_surface pn{TS::pn_triangles<Epick>(input)};
+    const TS::Patch_sampler<PN_surface> pn_sampler(pn);
+    const auto pn_m =
+        TS::measure_closed_surface(input, pn_sampler, job.samples, job.levels, check_self);
+    comparison["pn_triangles"] = measures_json(pn_m, check_self);
+    double fang_jump = -1;
+    try {
+      TS::Mesh_blending_options bo;
+      bo.order = 1;
+      const TS::Mesh_blending_surface<Epick::Point_3> blend(input, bo);
+      const Blend_sampler blend_sampler(blend, input);
+      const auto fang_m =
+          TS::measure_closed_surface(input, blend_sampler, job.samples, job.levels, check_self);
+      comparison["fang_order1"] = measures_json(fang_m, check_self);
+      fang_jump = fang_m.mean_jump_deg;
+    } catch (const TS::Invalid_input& e) {
+      comparison["fang_order1"] = {{"error", e.what()}};
+    }
+    report["comparison"] = comparison;
+    seconds["compare"] = clock.lap();
+    out << "comparison, mean normal jump: PN triangles " << fixed(pn_m.mean_jump_deg)
+        << " deg (max " << fixed(pn_m.max_jump_deg) << "), Fang order 1 "
+        << (fang_jump >= 0 ? fixed(fang_jump) + " deg" : std::string("failed")) << "\n";
+  }
+  seconds["total"] = total.lap();
+  report["timings"] = seconds;
+  if (!job.report.empty())
+    write_json_report(job.report, report);
+  return report;
+}
+
+} // namespace tspline

@@ -1,0 +1,705 @@
+// Tests of Xu's pseudo-AG^1 surfaces (thesis ch. 5-6; AG1.md): the construction's golden
+// values on the regular tetrahedron (exact), the certificate's verdicts, the measurements,
+// invariances, local control and validation. The ids C1..C32 refer to AG1.md §8.
+#include "test_support.h"
+
+#include <CGAL/Triangular_spline/IO/surface_file.h>
+#include <CGAL/Triangular_spline/Xu/Pseudo_AG1_surface.h>
+#include <CGAL/Triangular_spline/Xu/pseudo_AG1_certificate.h>
+#include <CGAL/Triangular_spline/Xu/thesis_polyhedra.h>
+#include <CGAL/Triangular_spline/closed_surface.h>
+
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace ts_test;
+using TS::Pseudo_AG1_options;
+using TS::Pseudo_AG1_surface;
+using Exact = Exact_kernel;
+using Double = CGAL::Simple_cartesian<double>;
+
+template <class K>
+using Mesh = CGAL::Surface_mesh<typename K::Point_3>;
+
+template <class K>
+typename K::Vector_3 vec(const typename K::FT& x, const typename K::FT& y,
+                         const typename K::FT& z) {
+  return typename K::Vector_3(x, y, z);
+}
+
+// The halfedge from vertex a to vertex b (indices).
+template <class K>
+typename Mesh<K>::Halfedge_index between(const Mesh<K>& m, std::size_t a, std::size_t b) {
+  const auto h = m.halfedge(typename Mesh<K>::Vertex_index(a), typename Mesh<K>::Vertex_index(b));
+  EXPECT_NE(h, Mesh<K>::null_halfedge());
+  return h;
+}
+
+// --- golden values on the regular tetrahedron a, b, c, d = vertices 0..3 -------------------
+
+TEST(PseudoAG1Golden, Chapter5ClosedFormsOnTheRegularTetrahedron) { // C16
+  using FT = Exact::FT;
+  const Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>("tetrahedron"),
+                                    Pseudo_AG1_options::chapter5());
+  ASSERT_TRUE(s.is_exact());
+  const auto& m = s.mesh();
+  const FT t(11, 15);
+  EXPECT_EQ(s.corner_plane(typename Mesh<Exact>::Vertex_index(0)).corner, vec<Exact>(t, t, t));
+  // S_{a->b} = (4a + b)/5, M_{a->b} = (2a + b + c + d)/5, I = (3a + b + c)/5
+  EXPECT_EQ(s.star(between<Exact>(m, 0, 1)), vec<Exact>(1, FT(3, 5), FT(3, 5)));
+  EXPECT_EQ(s.edge_middle(between<Exact>(m, 0, 1)), vec<Exact>(FT(1, 5), FT(1, 5), FT(1, 5)));
+  const auto ab = between<Exact>(m, 0, 1); // in face abc
+  EXPECT_EQ(m.target(m.next(ab)), typename Mesh<Exact>::Vertex_index(2));
+  EXPECT_EQ(s.corner_inner(ab), vec<Exact>(FT(3, 5), FT(3, 5), FT(1, 5)));
+  // L = (3r + 3s + 3p + q)/10 for the flip of face (r, s, p) next to rs
+  EXPECT_EQ(s.flip(ab), vec<Exact>(FT(1, 5), FT(1, 5), FT(-1, 5)));
+  // every control point is a convex combination of the vertices: inside the tetrahedron
+  for (auto f : m.faces())
+    for (const auto& p : s.control_net(f)) {
+      // the regular tetrahedron is |x| + |y| + |z| <= ... : check the four face planes
+      const std::array<std::array<int, 3>, 4> normals{
+          {{{1, 1, 1}}, {{1, -1, -1}}, {{-1, 1, -1}}, {{-1, -1, 1}}}};
+      for (const auto& n : normals)
+        EXPECT_LE(-(n[0] * p.x() + n[1] * p.y() + n[2] * p.z()), FT(1));
+    }
+}
+
+TEST(PseudoAG1Golden, SatoChapter5CornerIsTheStarCentroid) { // C16 on a skewed tetrahedron
+  using FT = Exact::FT;
+  const Mesh<Exact> mesh = TS::thesis_polyhedron<Exact>("sato");
+  const Pseudo_AG1_surface<Exact> s(mesh, Pseudo_AG1_options::chapter5());
+  ASSERT_TRUE(s.is_exact());
+  for (auto v : s.mesh().vertices()) {
+    typename Exact::Vector_3 sum(0, 0, 0);
+    for (auto w : CGAL::vertices_around_target(s.mesh().halfedge(v), s.mesh()))
+      sum = sum + (s.mesh().point(w) - CGAL::ORIGIN);
+    const auto p = s.mesh().point(v) - CGAL::ORIGIN;
+    if (!s.corner_plane(v).recentred) { // z = (12 v + sum of neighbours)/15
+      EXPECT_EQ(s.corner_plane(v).corner, (FT(12) * p + sum) / FT(15));
+    }
+  }
+}
+
+TEST(PseudoAG1Golden, ExactPresetDipsOnEveryEdge) { // C23
+  using FT = Exact::FT;
+  const Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>("tetrahedron"),
+                                    Pseudo_AG1_options::exact());
+  const auto& m = s.mesh();
+  const FT t(13, 15);
+  EXPECT_EQ(s.corner_plane(typename Mesh<Exact>::Vertex_index(0)).corner, vec<Exact>(t, t, t));
+  const auto ab = between<Exact>(m, 0, 1);
+  EXPECT_EQ(s.star(ab), vec<Exact>(FT(17, 15), FT(11, 15), FT(11, 15)));
+  EXPECT_EQ(s.edge_middle(ab), vec<Exact>(FT(1, 15), FT(1, 15), FT(1, 15)));
+  EXPECT_EQ(s.flip(ab), vec<Exact>(FT(1, 15), FT(1, 5), FT(-1, 5)));
+  for (auto e : m.edges())
+    EXPECT_GT(s.dip(e), 0);
+}
+
+// --- the certificate ------------------------------------------------------------------------
+
+TEST(PseudoAG1Certificate, RegularTetrahedronPatternIsExact) { // C4, C5 (exact pattern)
+  const Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>("tetrahedron"),
+                                    Pseudo_AG1_options::exact());
+  const TS::Pseudo_AG1_certificate c = TS::certify_pseudo_AG1(s);
+  EXPECT_TRUE(c.exact);
+  EXPECT_TRUE(c.pseudo_AG1());
+  EXPECT_EQ(c.c0_edges, 6u);
+  EXPECT_EQ(c.middle_edges, 6u);
+  EXPECT_EQ(c.ag1_edges, 0u);
+  EXPECT_EQ(c.g1_vertices, 4u);
+  for (const auto& E : c.per_edge) {
+    EXPECT_TRUE(E.admissible);  // the parallelogram has lambda = -1
+    EXPECT_EQ(E.join_order, 0); // C^0 holds, C^1 fails at the end diamonds
+    EXPECT_FALSE(E.diamonds[0]);
+    EXPECT_TRUE(E.diamonds[1] && E.diamonds[2] && E.diamonds[3]);
+    EXPECT_FALSE(E.diamonds[4]);
+  }
+}
+
+// Wraps a surface and moves one control point of one face: the certificate must notice.
+template <class K>
+struct Edited_surface {
+  using Geom_traits = K;
+  using Base = Pseudo_AG1_surface<K>;
+  using Face_index = typename Base::Face_index;
+  using Vertex_index = typename Base::Vertex_index;
+  const Base& base;
+  Face_index face;
+  std::size_t slot;
+  typename K::Vector_3 delta;
+  const typename Base::Mesh& mesh() const { return base.mesh(); }
+  std::vector<typename K::Vector_3> control_net(Face_index f) const {
+    auto net = base.control_net(f);
+    if (f == face)
+      net[slot] = net[slot] + delta;
+    return net;
+  }
+  decltype(auto) edge_relation(typename Base::Edge_index e) const { return base.edge_relation(e); }
+  decltype(auto) corner_plane(Vertex_index v) const { return base.corner_plane(v); }
+  decltype(auto) star(typename Base::Halfedge_index h) const { return base.star(h); }
+  bool is_exact() const { return base.is_exact(); }
+};
+
+TEST(PseudoAG1Certificate, ATinyEditOfOneControlPointIsCaught) {
+  using FT = Exact::FT;
+  const Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>("octahedron"),
+                                    Pseudo_AG1_options::exact());
+  ASSERT_TRUE(TS::certify_pseudo_AG1(s).pseudo_AG1());
+  const auto f = *s.mesh().faces().begin();
+  const FT tiny = FT(1) / FT(1e30);
+  // an edge-middle point (3,2,0): breaks C^0 on one edge
+  const Edited_surface<Exact> middle{s, f, TS::linear_index(TS::Multi_index{3, 2, 0}),
+                                     vec<Exact>(0, tiny, 0)};
+  const auto c1 = TS::certify_pseudo_AG1(middle);
+  EXPECT_FALSE(c1.pseudo_AG1());
+  EXPECT_EQ(c1.c0_edges, c1.edges - 1);
+  // a corner-inner point (3,1,1): C^0 stays, a middle diamond breaks on two edges
+  const Edited_surface<Exact> inner{s, f, TS::linear_index(TS::Multi_index{3, 1, 1}),
+                                    vec<Exact>(tiny, 0, 0)};
+  const auto c2 = TS::certify_pseudo_AG1(inner);
+  EXPECT_EQ(c2.c0_edges, c2.edges);
+  EXPECT_EQ(c2.middle_edges, c2.edges - 2);
+  EXPECT_FALSE(c2.pseudo_AG1());
+}
+
+TEST(PseudoAG1Certificate, ExactSurfacesArePseudoAG1OnEveryShape) { // C1, C2, C3, C31
+  for (const std::string name :
+       {"tetrahedron", "sato", "octahedron", "cube", "cube-centres", "star", "v-arm", "torus9"}) {
+    SCOPED_TRACE(name);
+    for (const auto& options : {Pseudo_AG1_options::exact(), Pseudo_AG1_options::chapter5()}) {
+      const Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>(name), options);
+      ASSERT_TRUE(s.is_exact());
+      const auto c = TS::certify_pseudo_AG1(s);
+      EXPECT_EQ(c.c0_edges, c.edges);
+      EXPECT_EQ(c.middle_edges, c.edges);
+      EXPECT_EQ(c.coplanar_vertices, c.vertices);
+      // G^1 at a vertex also needs the corner triangles consistently oriented; a folded
+      // projection (very sharp vertex) is the documented exception
+      std::size_t inverted = 0;
+      for (auto v : s.mesh().vertices())
+        inverted += s.corner_plane(v).inverted_corner;
+      EXPECT_EQ(c.g1_vertices + inverted, c.vertices);
+    }
+  }
+}
+
+TEST(PseudoAG1Certificate, DoubleSurfacesHaveTinyResiduals) { // C2, C3 in double
+  for (const std::string name : {"icosahedron", "pentakis", "torus", "cube"}) {
+    SCOPED_TRACE(name);
+    const Pseudo_AG1_surface<Double> s(TS::thesis_polyhedron<Double>(name));
+    EXPECT_FALSE(s.is_exact());
+    const auto c = TS::certify_pseudo_AG1(s);
+    EXPECT_FALSE(c.exact);
+    EXPECT_TRUE(c.pseudo_AG1());
+    EXPECT_LT(c.max_coplanarity, 1e-12);
+    const TS::Patch_sampler<Pseudo_AG1_surface<Double>> sampler(s);
+    const auto m = TS::measure_closed_surface(s.mesh(), sampler, 9, 2, false);
+    EXPECT_LT(m.vertex_max_jump_deg, 1e-9); // G^1 at the vertices
+  }
+}
+
+// --- measurements -----------------------------------------------------------------------------
+
+TEST(PseudoAG1Measures, RegularTetrahedronIsNotG1AlongEdges) { // C5 in double
+  const Pseudo_AG1_surface<Double> s(TS::thesis_polyhedron<Double>("tetrahedron"));
+  const TS::Patch_sampler<Pseudo_AG1_surface<Double>> sampler(s);
+  const auto m = TS::measure_closed_surface(s.mesh(), sampler, 15, 3);
+  for (double jump : m.edge_max_jump_deg)
+    EXPECT_GT(jump, 10);
+  EXPECT_LT(m.vertex_max_jump_deg, 1e-9);
+  // sanity ranges of AG1.md Appendix A (prototype: 80 deg max, 53 mean, volume 0.22)
+  EXPECT_GT(m.max_jump_deg, 60);
+  EXPECT_LT(m.max_jump_deg, 100);
+  EXPECT_GT(m.volume_ratio, 0.15);
+  EXPECT_LT(m.volume_ratio, 0.3);
+  EXPECT_EQ(m.inside_fraction, 1.0);
+  EXPECT_FALSE(m.self_intersecting);
+}
+
+TEST(PseudoAG1Measures, Chapter5ShrinksTheInput) { // C17
+  for (const std::string name : {"tetrahedron", "icosahedron"}) {
+    const Pseudo_AG1_surface<Double> s(TS::thesis_polyhedron<Double>(name),
+                                       Pseudo_AG1_options::chapter5());
+    const TS::Patch_sampler<Pseudo_AG1_surface<Double>> sampler(s);
+    const auto m = TS::measure_closed_surface(s.mesh(), sampler, 5, 2, false);
+    EXPECT_LT(m.volume_ratio, 1) << name;
+    EXPECT_EQ(m.inside_fraction, 1.0) << name;
+  }
+}
+
+TEST(PseudoAG1Measures, OffsetsReduceJumpsOnSmoothMeshes) { // C24
+  for (const std::string name : {"icosahedron", "pentakis", "torus"}) {
+    Pseudo_AG1_options flat;
+    flat.offsets = {{0, 0, 0}};
+    const Pseudo_AG1_surface<Double> with(TS::thesis_polyhedron<Double>(name)),
+        without(TS::thesis_polyhedron<Double>(name), flat);
+    const TS::Patch_sampler<Pseudo_AG1_surface<Double>> a(with), b(without);
+    const double jump_with = TS::measure_closed_surface(with.mesh(), a, 9, 1, false).max_jump_deg;
+    const double jump_without =
+        TS::measure_closed_surface(without.mesh(), b, 9, 1, false).max_jump_deg;
+    EXPECT_LT(jump_with, jump_without) << name;
+  }
+}
+
+// --- the steps ----------------------------------------------------------------------------
+
+TEST(PseudoAG1Steps, UmbrellaKeepsLengthsAndAngleRatios) { // C21
+  Pseudo_AG1_options o;
+  o.offsets = {{0, 0, 0}}; // first stars (4v + w)/5: lengths |w - v|/5
+  o.recentering = false;
+  for (const std::string name : {"icosahedron", "pentakis", "cube"}) {
+    const Pseudo_AG1_surface<Double> s(TS::thesis_polyhedron<Double>(name), o);
+    const auto& m = s.mesh();
+    for (auto v : m.vertices()) {
+      const auto ring = TS::outgoing_ring(v, m);
+      const auto& plane = s.corner_plane(v);
+      if (plane.equalised)
+        continue;
+      std::vector<double> alpha, alpha_star;
+      double sum = 0;
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const auto h = ring[i], g = ring[(i + 1) % ring.size()];
+        const double spoke = std::sqrt((m.point(m.target(h)) - m.point(v)).squared_length()) / 5;
+        const auto S = s.star(h) - plane.corner, T = s.star(g) - plane.corner;
+        EXPECT_NEAR(std::sqrt(S.squared_length()), spoke, 1e-12 * spoke);
+        const auto a = m.point(m.target(h)) - m.point(v), b = m.point(m.target(g)) - m.point(v);
+        alpha.push_back(std::atan2(std::sqrt(CGAL::cross_product(a, b).squared_length()), a * b));
+        alpha_star.push_back(
+            std::atan2(std::sqrt(CGAL::cross_product(S, T).squared_length()), S * T));
+        sum += alpha_star.back();
+      }
+      EXPECT_NEAR(sum, 2 * CGAL_PI, 1e-12);
+      for (std::size_t i = 1; i < alpha.size(); ++i)
+        EXPECT_NEAR(alpha_star[i] / alpha_star[0], alpha[i] / alpha[0], 1e-10);
+    }
+  }
+}
+
+TEST(PseudoAG1Steps, UndulationGainLowersSharpAndRaisesFlatVertices) { // C25
+  Pseudo_AG1_options off;
+  off.undulation_gain = 0;
+  for (const std::string name : {"tetrahedron", "star", "cube-centres"}) {
+    const Pseudo_AG1_surface<Double> on(TS::thesis_polyhedron<Double>(name)),
+        without(TS::thesis_polyhedron<Double>(name), off);
+    for (auto v : on.mesh().vertices()) {
+      const auto& a = on.corner_plane(v);
+      const auto& b = without.corner_plane(v);
+      const double unit = std::sqrt(a.normal.squared_length());
+      const double d = (a.centroid - (on.mesh().point(v) - CGAL::ORIGIN)) * a.normal / unit;
+      if (d == 0)
+        continue;
+      const double ha = a.offset / unit, hb = b.offset / unit;
+      if (a.mean_dihedral < 4 * CGAL_PI / 5) {
+        EXPECT_LT(ha, hb) << name << " vertex " << std::size_t(v);
+      } else if (a.mean_dihedral > 4 * CGAL_PI / 5) {
+        EXPECT_GT(ha, hb) << name << " vertex " << std::size_t(v);
+      }
+    }
+  }
+}
+
+TEST(PseudoAG1Steps, DegenerateCasesAreFlaggedNotFatal) { // C32
+  Pseudo_AG1_options centroid;
+  centroid.normal = TS::Corner_plane_normal::CENTROID;
+  centroid.offsets = {{0, 0, 0}};
+  const Pseudo_AG1_surface<Exact> cube(TS::thesis_polyhedron<Exact>("cube-centres"), centroid);
+  std::size_t fallbacks = 0;
+  for (auto v : cube.mesh().vertices())
+    fallbacks += cube.corner_plane(v).normal_fallback;
+  EXPECT_EQ(fallbacks, 6u); // the flat face centres, where C = v
+
+  Pseudo_AG1_options flat;
+  flat.offsets = {{0, 0, 0}};
+  const Pseudo_AG1_surface<Double> arm(TS::thesis_polyhedron<Double>("v-arm"), flat);
+  std::size_t recentred = 0;
+  for (auto v : arm.mesh().vertices())
+    recentred += arm.corner_plane(v).recentred;
+  EXPECT_EQ(recentred, 2u); // both apexes
+
+  const Pseudo_AG1_surface<Double> sato(TS::thesis_polyhedron<Double>("sato"));
+  std::size_t folded = 0;
+  for (auto v : sato.mesh().vertices())
+    folded += sato.corner_plane(v).folded_projection;
+  EXPECT_GE(folded, 1u);
+  EXPECT_TRUE(TS::certify_pseudo_AG1(sato).middle_edges == sato.mesh().number_of_edges());
+}
+
+TEST(PseudoAG1Steps, RecentredCornerLiesInsideTheProjectedStar) {
+  Pseudo_AG1_options o = Pseudo_AG1_options::exact();
+  const Pseudo_AG1_surface<Exact> arm(TS::thesis_polyhedron<Exact>("v-arm"), o);
+  ASSERT_TRUE(arm.is_exact());
+  std::size_t recentred = 0;
+  for (auto v : arm.mesh().vertices()) {
+    const auto& plane = arm.corner_plane(v);
+    if (!plane.recentred)
+      continue;
+    ++recentred;
+    // the umbrella of a projection placement is the projected star polygon around z: z (the
+    // origin of the umbrella) must be strictly inside it
+    typename Exact::Point_2 origin(0, 0);
+    const auto& u = plane.umbrella;
+    EXPECT_EQ(CGAL::bounded_side_2(u.begin(), u.end(), origin, Exact()), CGAL::ON_BOUNDED_SIDE);
+  }
+  EXPECT_EQ(recentred, 2u);
+  EXPECT_TRUE(TS::certify_pseudo_AG1(arm).pseudo_AG1());
+}
+
+// --- invariances ----------------------------------------------------------------------------
+
+TEST(PseudoAG1Invariance, ExactSurfaceCommutesWithRationalSimilarities) { // C28, exact
+  using FT = Exact::FT;
+  const Mesh<Exact> mesh = TS::thesis_polyhedron<Exact>("v-arm");
+  // x -> s Q x + t with Q the rational rotation of the 3-4-5 triangle about z then x
+  const FT sc(7, 3);
+  auto map = [&](const typename Exact::Vector_3& x) {
+    const FT a = (FT(3) * x.x() - FT(4) * x.y()) / FT(5),
+             b = (FT(4) * x.x() + FT(3) * x.y()) / FT(5);
+    const FT c = x.z();
+    const FT b2 = (FT(5) * b - FT(12) * c) / FT(13), c2 = (FT(12) * b + FT(5) * c) / FT(13);
+    return sc * typename Exact::Vector_3(a, b2, c2) + typename Exact::Vector_3(1, -2, FT(1, 3));
+  };
+  Mesh<Exact> moved = mesh;
+  for (auto v : moved.vertices())
+    moved.point(v) = CGAL::ORIGIN + map(mesh.point(v) - CGAL::ORIGIN);
+  const Pseudo_AG1_surface<Exact> a(mesh, Pseudo_AG1_options::exact()),
+      b(moved, Pseudo_AG1_options::exact());
+  for (auto f : a.mesh().faces()) {
+    const auto na = a.control_net(f), nb = b.control_net(f);
+    for (std::size_t i = 0; i < na.size(); ++i)
+      EXPECT_EQ(map(na[i]), nb[i]);
+  }
+}
+
+TEST(PseudoAG1Invariance, ThesisSurfaceCommutesWithSimilarities) { // C28, double
+  const Mesh<Double> mesh = TS::thesis_polyhedron<Double>("pentakis");
+  const double sc = 3.7, c = std::cos(0.7), s = std::sin(0.7);
+  auto map = [&](const Double::Vector_3& x) {
+    return Double::Vector_3(sc * (c * x.x() - s * x.y()) + 1, sc * (s * x.x() + c * x.y()) - 2,
+                            sc * x.z() + 0.5);
+  };
+  Mesh<Double> moved = mesh;
+  for (auto v : moved.vertices())
+    moved.point(v) = CGAL::ORIGIN + map(mesh.point(v) - CGAL::ORIGIN);
+  Pseudo_AG1_options o;
+  o.edge_map = TS::Edge_map::AVERAGED_DIAMOND;
+  const Pseudo_AG1_surface<Double> a(mesh, o), b(moved, o);
+  double worst = 0;
+  for (auto f : a.mesh().faces()) {
+    const auto na = a.control_net(f), nb = b.control_net(f);
+    for (std::size_t i = 0; i < na.size(); ++i)
+      worst = std::max(worst, std::sqrt((map(na[i]) - nb[i]).squared_length()));
+  }
+  EXPECT_LT(worst, 1e-12 * sc * 4); // diagonal of the input about 4 after scaling
+}
+
+TEST(PseudoAG1Invariance, RelabellingVerticesAndFacesChangesNothing) { // C27
+  const Mesh<Double> mesh = TS::thesis_polyhedron<Double>("pentakis");
+  const std::size_t n = mesh.number_of_vertices();
+  std::vector<std::size_t> perm(n);
+  for (std::size_t i = 0; i < n; ++i)
+    perm[i] = (i * 17 + 5) % n; // 17 is prime to 42
+  Mesh<Double> relabelled;
+  std::vector<Mesh<Double>::Vertex_index> inverse(n);
+  std::vector<std::size_t> old_of(n);
+  for (std::size_t i = 0; i < n; ++i)
+    old_of[perm[i]] = i;
+  for (std::size_t j = 0; j < n; ++j)
+    inverse[old_of[j]] = relabelled.add_vertex(mesh.point(Mesh<Double>::Vertex_index(old_of[j])));
+  std::vector<std::array<std::size_t, 3>> faces;
+  for (auto f : mesh.faces()) {
+    std::array<std::size_t, 3> t;
+    std::size_t i = 0;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      t[i++] = std::size_t(v);
+    faces.push_back(t);
+  }
+  std::reverse(faces.begin(), faces.end());
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const auto& t = faces[k];
+    const std::size_t r = k % 3; // rotate the vertex order
+    relabelled.add_face(inverse[t[r]], inverse[t[(r + 1) % 3]], inverse[t[(r + 2) % 3]]);
+  }
+  const Pseudo_AG1_surface<Double> a(mesh), b(relabelled);
+  double worst = 0;
+  for (auto h : a.mesh().halfedges()) {
+    const auto g = b.mesh().halfedge(inverse[std::size_t(a.mesh().source(h))],
+                                     inverse[std::size_t(a.mesh().target(h))]);
+    ASSERT_NE(g, Mesh<Double>::null_halfedge());
+    for (const auto& d : {a.star(h) - b.star(g), a.edge_middle(h) - b.edge_middle(g),
+                          a.corner_inner(h) - b.corner_inner(g), a.flip(h) - b.flip(g)})
+      worst = std::max(worst, std::sqrt(d.squared_length()));
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+// --- local control ----------------------------------------------------------------------
+
+TEST(PseudoAG1LocalControl, EditsChangeOnlyTheListedFacesAndKeepTheCertificate) { // C26
+  Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>("cube"), Pseudo_AG1_options::exact());
+  const auto before = s;
+  const auto h = *s.mesh().halfedges().begin();
+  const auto changed = s.edit_corner_inner(h, s.corner_inner(h) + vec<Exact>(1, 2, 3));
+  EXPECT_EQ(changed.size(), 3u);
+  for (auto f : s.mesh().faces()) {
+    const bool listed = std::find(changed.begin(), changed.end(), f) != changed.end();
+    EXPECT_EQ(s.control_net(f) != before.control_net(f), listed) << std::size_t(f);
+  }
+  EXPECT_TRUE(TS::certify_pseudo_AG1(s).pseudo_AG1());
+  const auto g = s.mesh().next(h);
+  const auto flips = s.edit_flip(g, vec<Exact>(5, 5, 5));
+  EXPECT_EQ(flips.size(), 2u);
+  EXPECT_EQ(s.flip(g), vec<Exact>(5, 5, 5));
+  EXPECT_TRUE(TS::certify_pseudo_AG1(s).pseudo_AG1());
+}
+
+TEST(PseudoAG1LocalControl, MovingAVertexChangesOnlyItsTwoRing) { // C26, last bullet
+  const Mesh<Double> mesh = TS::thesis_polyhedron<Double>("pentakis");
+  Mesh<Double> moved = mesh;
+  const Mesh<Double>::Vertex_index v(7);
+  moved.point(v) = moved.point(v) + Double::Vector_3(0.01, -0.02, 0.03);
+  const Pseudo_AG1_surface<Double> a(mesh), b(moved);
+  // faces touching the closed 1-ring of v
+  std::vector<bool> near(mesh.number_of_vertices(), false);
+  near[v] = true;
+  for (auto w : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+    near[w] = true;
+  std::size_t changed = 0, expected = 0;
+  for (auto f : mesh.faces()) {
+    bool touches = false;
+    for (auto w : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      touches = touches || near[w];
+    expected += touches;
+    const bool differs = a.control_net(f) != b.control_net(f);
+    changed += differs;
+    if (differs) {
+      EXPECT_TRUE(touches) << std::size_t(f);
+    }
+  }
+  EXPECT_EQ(changed, expected);
+}
+
+// --- validation ---------------------------------------------------------------------------
+
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const TS::Invalid_input& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PseudoAG1Validation, BadMeshesAreRejectedNamingTheElement) { // C30
+  Mesh<Double> open = TS::thesis_polyhedron<Double>("tetrahedron");
+  CGAL::Euler::remove_face(open.halfedge(*open.faces().begin()), open);
+  open.collect_garbage();
+  EXPECT_NE(error_of([&] { Pseudo_AG1_surface<Double> s(open); }).find("not closed"),
+            std::string::npos)
+      << error_of([&] { Pseudo_AG1_surface<Double> s(open); });
+
+  Mesh<Double> flat;
+  auto a = flat.add_vertex({0, 0, 0}), b = flat.add_vertex({1, 0, 0}),
+       c = flat.add_vertex({2, 0, 0}), d = flat.add_vertex({0, 1, 1});
+  flat.add_face(a, b, c);
+  flat.add_face(a, d, b);
+  flat.add_face(b, d, c);
+  flat.add_face(c, d, a);
+  EXPECT_NE(error_of([&] { Pseudo_AG1_surface<Double> s(flat); }).find("face 0 has zero area"),
+            std::string::npos);
+
+  Mesh<Double> nan = TS::thesis_polyhedron<Double>("tetrahedron");
+  nan.point(*nan.vertices().begin()) = Double::Point_3(std::nan(""), 0, 0);
+  EXPECT_NE(error_of([&] { Pseudo_AG1_surface<Double> s(nan); }).find("non-finite"),
+            std::string::npos);
+
+  Mesh<Double> quad;
+  auto p = quad.add_vertex({0, 0, 0}), q = quad.add_vertex({1, 0, 0}),
+       r = quad.add_vertex({1, 1, 0}), t = quad.add_vertex({0, 1, 0});
+  quad.add_face(p, q, r, t);
+  quad.add_face(t, r, q, p);
+  EXPECT_NE(error_of([&] { Pseudo_AG1_surface<Double> s(quad); }).find("not a triangle"),
+            std::string::npos);
+
+  EXPECT_NE(error_of([&] { Pseudo_AG1_surface<Double> s(Mesh<Double>{}); }).find("no face"),
+            std::string::npos);
+
+  Pseudo_AG1_options bad;
+  bad.star_scale = 0;
+  EXPECT_NE(error_of([&] {
+              Pseudo_AG1_surface<Double> s(TS::thesis_polyhedron<Double>("tetrahedron"), bad);
+            }).find("star scale"),
+            std::string::npos);
+  EXPECT_NE(error_of([] { TS::pseudo_AG1_preset("fancy"); }).find("unknown preset"),
+            std::string::npos);
+}
+
+TEST(PseudoAG1Validation, InwardComponentsAreReorientedAndCounted) { // R-5, C30
+  Mesh<Exact> mesh = TS::thesis_polyhedron<Exact>("tetrahedron");
+  Mesh<Exact> twice = mesh;
+  // a second, inward copy far away
+  std::vector<Mesh<Exact>::Vertex_index> map;
+  for (auto v : mesh.vertices())
+    map.push_back(twice.add_vertex(mesh.point(v) + typename Exact::Vector_3(10, 0, 0)));
+  for (auto f : mesh.faces()) {
+    std::vector<Mesh<Exact>::Vertex_index> t;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      t.push_back(map[std::size_t(v)]);
+    twice.add_face(t[2], t[1], t[0]);
+  }
+  const Pseudo_AG1_surface<Exact> s(twice, Pseudo_AG1_options::exact());
+  EXPECT_EQ(s.mesh_summary().components.size(), 2u);
+  EXPECT_EQ(s.mesh_summary().reoriented, 1u);
+  EXPECT_EQ(s.mesh_summary().components[0].euler, 2);
+  EXPECT_TRUE(TS::certify_pseudo_AG1(s).pseudo_AG1());
+  // the copy's corners are the originals shifted
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(s.corner_plane(Mesh<Exact>::Vertex_index(i + 4)).corner,
+              s.corner_plane(Mesh<Exact>::Vertex_index(i)).corner +
+                  typename Exact::Vector_3(10, 0, 0));
+}
+
+TEST(PseudoAG1Validation, TorusNineHasEulerCharacteristicZero) { // C30, Fig. 5.5
+  const Pseudo_AG1_surface<Double> s(TS::thesis_polyhedron<Double>("torus9"));
+  ASSERT_EQ(s.mesh_summary().components.size(), 1u);
+  EXPECT_EQ(s.mesh_summary().components[0].euler, 0);
+  EXPECT_EQ(s.mesh_summary().components[0].genus, 1);
+  EXPECT_TRUE(TS::certify_pseudo_AG1(s).pseudo_AG1());
+}
+
+} // namespace
+
+// --- the tspline-surface file ---------------------------------------------------------------
+
+namespace {
+
+TEST(PseudoAG1SurfaceFile, ExactRoundTripKeepsEveryControlPointAndTheProof) {
+  const Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>("v-arm"),
+                                    Pseudo_AG1_options::exact());
+  std::stringstream file;
+  TS::write_surface_file(file, s);
+  const TS::Surface_file<Exact> read = TS::read_surface_file<Exact>(file, "test.surface");
+  EXPECT_TRUE(read.exact_numbers());
+  ASSERT_EQ(read.mesh().number_of_faces(), s.mesh().number_of_faces());
+  for (auto f : s.mesh().faces())
+    EXPECT_EQ(read.control_net(f), s.control_net(f));
+  // certified from the nets alone: the relations are solved, not read
+  const TS::Pseudo_AG1_view<TS::Surface_file<Exact>> view(read);
+  const auto c = TS::certify_pseudo_AG1(view);
+  EXPECT_TRUE(c.exact);
+  EXPECT_TRUE(c.pseudo_AG1());
+  EXPECT_EQ(c.ag1_edges, TS::certify_pseudo_AG1(s).ag1_edges);
+  for (auto e : s.mesh().edges())
+    EXPECT_EQ(view.edge_relation(e).relation, s.edge_relation(e).relation);
+}
+
+TEST(PseudoAG1SurfaceFile, RotatedFaceLinesAreReindexed) {
+  const Pseudo_AG1_surface<Exact> s(TS::thesis_polyhedron<Exact>("octahedron"),
+                                    Pseudo_AG1_options::exact());
+  std::stringstream file;
+  TS::write_surface_file(file, s);
+  // rotate every face line (a b c) -> (b c a) and its patch accordingly
+  std::string text = file.str(), out;
+  std::istringstream in(text);
+  std::string line;
+  std::vector<std::string> lines;
+  while (std::getline(in, line))
+    lines.push_back(line);
+  std::size_t faces_at = 0, patches_at = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].rfind("faces ", 0) == 0)
+      faces_at = i;
+    if (lines[i] == "patches")
+      patches_at = i;
+  }
+  const std::size_t F = patches_at - faces_at - 1;
+  for (std::size_t f = 0; f < F; ++f) {
+    std::istringstream face(lines[faces_at + 1 + f]);
+    std::string a, b, c;
+    face >> a >> b >> c;
+    lines[faces_at + 1 + f] = b + " " + c + " " + a;
+    std::istringstream patch(lines[patches_at + 1 + f]);
+    std::vector<std::string> numbers(63);
+    for (auto& x : numbers)
+      patch >> x;
+    std::string rotated;
+    for (const auto& index : TS::multi_indices(5)) {
+      // new order (b, c, a): the point of index (i, j, k) over (b, c, a) is (k, i, j) over (a, b, c)
+      const std::size_t old = TS::linear_index(TS::Multi_index{index[2], index[0], index[1]});
+      for (int d = 0; d < 3; ++d)
+        rotated += (rotated.empty() ? "" : " ") + numbers[3 * old + std::size_t(d)];
+    }
+    lines[patches_at + 1 + f] = rotated;
+  }
+  for (const auto& l : lines)
+    out += l + "\n";
+  std::istringstream rotated_file(out);
+  const TS::Surface_file<Exact> read = TS::read_surface_file<Exact>(rotated_file, "rotated");
+  // the read faces start at b: compare the points with the same powers of the same vertices
+  auto corners = [](const Mesh<Exact>& m, Mesh<Exact>::Face_index f) {
+    const auto h = m.halfedge(f);
+    return std::array<Mesh<Exact>::Vertex_index, 3>{{m.target(h), m.target(m.next(h)), m.source(h)}};
+  };
+  std::size_t rotated_faces = 0;
+  for (auto f : s.mesh().faces()) {
+    const auto cs = corners(s.mesh(), f), cr = corners(read.mesh(), f);
+    rotated_faces += cs[0] != cr[0];
+    for (const auto& index : TS::multi_indices(5)) {
+      TS::Multi_index in_s;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          if (cr[std::size_t(a)] == cs[std::size_t(b)])
+            in_s[b] = index[a];
+      EXPECT_EQ(read.control_net(f)[TS::linear_index(index)], s.control_net(f)[TS::linear_index(in_s)]);
+    }
+  }
+  EXPECT_EQ(rotated_faces, s.mesh().number_of_faces());
+}
+
+TEST(PseudoAG1SurfaceFile, MalformedFilesGiveOneLineErrors) {
+  const std::string head = "tspline-surface 1\ndegree 5\nnumber_type exact\n";
+  const std::string tetra = "vertices 4\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n";
+  auto error = [](const std::string& text) {
+    std::istringstream in(text);
+    try {
+      TS::read_surface_file<Exact>(in, "bad.surface");
+    } catch (const TS::Invalid_input& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("tspline-spline 1\n").find("bad.surface:1: not a tspline-surface file"),
+            std::string::npos);
+  EXPECT_NE(error(head + "vertices 99999999\n0 0 0\n").find("cannot fit"), std::string::npos);
+  EXPECT_NE(error(head + tetra + "faces 1\n0 1 1\n").find("repeats a vertex"), std::string::npos);
+  EXPECT_NE(error(head + tetra + "faces 1\n0 1 7\n").find("out of range"), std::string::npos);
+  // an open mesh (one face) with its patch
+  std::string one = head + tetra + "faces 1\n0 1 2\npatches\n";
+  for (int i = 0; i < 63; ++i)
+    one += (i ? " 0" : "0");
+  one += "\nend\n";
+  EXPECT_NE(error(one).find("bad.surface: vertex 3 is isolated"), std::string::npos) << error(one);
+  std::string short_patch = head + tetra + "faces 1\n0 1 2\npatches\n";
+  for (int i = 0; i < 62; ++i)
+    short_patch += (i ? " 10" : "10");
+  EXPECT_NE(error(short_patch + "\nend\n").find(":11: expected 63 numbers for patch 0 of 1"),
+            std::string::npos)
+      << error(short_patch + "\nend\n");
+  EXPECT_NE(error(head + tetra + "faces 1\n0 1 2\npatches\n1 2 3\nend\n").find("cannot fit"),
+            std::string::npos);
+  EXPECT_NE(error(head + tetra + "faces 0\npatches\nend\nmore\n").find("after \"end\""),
+            std::string::npos);
+}
+
+} // namespace
