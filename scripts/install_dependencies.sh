@@ -7,6 +7,7 @@ set -euo pipefail
 
 packages=(cmake g++ make libcgal-dev libeigen3-dev libgtest-dev libbenchmark-dev libpng-dev
           libcli11-dev nlohmann-json3-dev
+          python3-dev python3-numpy pybind11-dev python3-pybind11 python3-pytest
           doxygen libjs-mathjax clang-format)
 if [[ ${1:-} == --fuzz ]]; then
   packages+=(clang libclang-rt-14-dev)

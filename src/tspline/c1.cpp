@@ -19,10 +19,14 @@ int run_c1(const std::vector<std::string>& args) {
               "determining set of control points from the data and propagates the others, "
               "handles degenerate frames, and certifies C^1 continuity on every interior edge "
               "(exactly with --exact).");
-  cl.describe("Input: '.xyz' (one 'x y z' per line, Delaunay triangulation of (x, y)) or a "
+  cl.describe("Input: '.xyz' (one 'x y z' per line, Delaunay triangulation of (x, y)), '.csv' "
+              "(a header line naming the columns; --columns chooses them) or a "
               "triangle mesh (.off/.obj/.ply/.stl) whose vertex (x, y) is the domain and z "
               "the height; holes and non-convex boundaries of a mesh are kept.");
-  cl.input(job.input, "FILE", "scattered points (.xyz) or triangle mesh");
+  cl.input(job.input, "FILE", "scattered points (.xyz, .csv) or triangle mesh");
+  cl.text(job.columns, "columns", "X,Y,Z",
+          "the header names of the x, y and z columns of a .csv input (and of zx, zy with "
+          "--gradients); default: the columns named x, y, z");
   cl.text(job.fit, "fit", "MODE",
           "adaptive (interpolate; local polynomials where they resolve the data, "
           "least thin-plate energy where they do not: accurate on dense and sparse "

@@ -2,6 +2,7 @@
 // propagate -> certify -> outputs. Instantiated for double and for exact rationals.
 
 #include "c1_job.h"
+#include "csv_input.h"
 #include "files.h"
 #include "mesh_output.h"
 
@@ -102,7 +103,8 @@ TS::Planar_domain<K> scaled_y(const TS::Planar_domain<K>& domain, int exponent) 
 }
 
 template <class K>
-Input<K> read_input(const std::string& path, bool rescale, bool gradients) {
+Input<K> read_input(const std::string& path, bool rescale, bool gradients,
+                    const std::string& columns) {
   if (path.empty()) {
     auto [domain, values] = TS::demo_data<K>();
     Input<K> input{
@@ -114,12 +116,16 @@ Input<K> read_input(const std::string& path, bool rescale, bool gradients) {
     return input;
   }
   const std::string ext = lowercase_extension(path);
-  if (gradients && ext != "xyz" && ext != "txt")
+  if (gradients && ext != "xyz" && ext != "txt" && ext != "csv")
     throw TS::Invalid_input("'" + path +
                             "': --gradients needs scattered points 'x y z zx zy' "
-                            "(.xyz)");
-  if (ext == "xyz" || ext == "txt") {
-    std::ifstream in = open_input(path);
+                            "(.xyz or .csv)");
+  if (ext == "xyz" || ext == "txt" || ext == "csv") {
+    std::ifstream file = open_input(path);
+    // CSV: the chosen columns as .xyz lines, checked by the same reader
+    std::istringstream csv(ext == "csv" ? csv_as_xyz(file, path, columns, gradients)
+                                        : std::string());
+    std::istream& in = ext == "csv" ? static_cast<std::istream&>(csv) : file;
     TS::Scattered_data<K> data = TS::read_xyz<K>(in, path, gradients);
     // Rescaled before triangulating: the Delaunay triangulation of the rescaled points
     // (and dz/dy' = dz/dy / 2^exponent).
@@ -151,7 +157,8 @@ Input<K> read_input(const std::string& path, bool rescale, bool gradients) {
             {}};
   }
   throw TS::Invalid_input("'" + path + "': unknown input format '." + ext +
-                          "' (expected .xyz for scattered points, or .off/.obj/.ply/.stl)");
+                          "' (expected .xyz or .csv for scattered points, or "
+                          ".off/.obj/.ply/.stl)");
 }
 
 template <class Point_2>
@@ -175,7 +182,7 @@ Json run(const C1_job& job, std::ostream& out) {
                           std::filesystem::file_size(job.input, size_error) > 4000000 &&
                           !size_error;
   progress("c1", "reading and triangulating " + job.input, large_file);
-  Input<K> input = read_input<K>(job.input, job.rescale, job.gradients);
+  Input<K> input = read_input<K>(job.input, job.rescale, job.gradients, job.columns);
   timings["read_and_triangulate"] = clock.lap();
   // About a second of work from here on: 10^5 triangles exact, 10^6 in double.
   const bool large = input.domain.number_of_faces() > (job.exact ? 20000u : 300000u);
@@ -625,6 +632,8 @@ Json run_c1_job(const C1_job& job, std::ostream& out) {
     throw Usage_error("--fix must be reroute or perturb, not '" + job.fix + "'");
   if (job.levels < 0 || job.levels > 8)
     throw Usage_error("--levels must be between 0 and 8");
+  if (!job.columns.empty() && lowercase_extension(job.input) != "csv")
+    throw Usage_error("--columns chooses the columns of a .csv input");
   return job.exact ? run<Exact>(job, out) : run<Fast>(job, out);
 }
 

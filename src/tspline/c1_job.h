@@ -13,7 +13,8 @@
 namespace tspline {
 
 struct C1_job {
-  std::string input; // .xyz scattered data or a mesh (OFF/OBJ/PLY/STL); empty: demo data
+  std::string input;   // .xyz or .csv scattered data or a mesh (OFF/OBJ/PLY/STL); empty: demo data
+  std::string columns; // .csv: the header names of x,y,z (and zx,zy); empty: x,y,z
   std::string fit =
       "adaptive"; // adaptive | local | energy | lsq | tangent | interpolate | approximate
   int degree = 5; // largest degree of the local polynomials (local, lsq)
