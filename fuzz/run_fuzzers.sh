@@ -13,8 +13,8 @@ fuzz_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 jobs=${FUZZ_JOBS:-2}
 fuzzers=("$@")
 if [[ ${#fuzzers[@]} -eq 0 ]]; then
-  fuzzers=(fuzz_xyz fuzz_xyz_exact fuzz_query fuzz_spline fuzz_spline_exact fuzz_off fuzz_obj
-           fuzz_ply fuzz_stl)
+  fuzzers=(fuzz_xyz fuzz_xyz_exact fuzz_query fuzz_spline fuzz_spline_exact fuzz_surface fuzz_off
+           fuzz_obj fuzz_ply fuzz_stl)
 fi
 
 # A report of undefined behaviour with its stack, like ASan's.
@@ -28,6 +28,7 @@ run() { # run FUZZER: one fuzzing session; its exit status goes to logs/FUZZER.s
   case $name in
     fuzz_xyz* | fuzz_query) dict=xyz ;;
     fuzz_spline*) dict=spline max_len=16384 ;; # a degree-5 patch line takes ~1 kB
+    fuzz_surface) dict=surface max_len=16384 ;;
     *) dict=${name#fuzz_} ;;
   esac
   mkdir -p "$build/artifacts/$name"

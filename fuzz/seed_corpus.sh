@@ -30,6 +30,7 @@ seed fuzz_query "$data"/*.xy "$data"/bad/*.xy "$data"/franke_100.xyz "$root"/fuz
 for fuzzer in fuzz_spline fuzz_spline_exact; do
   seed $fuzzer "$data"/*.spline "$data"/bad/*.spline "$root"/fuzz/findings/spline_*
 done
+seed fuzz_surface "$data"/*.surface "$data"/bad/*.surface "$root"/fuzz/findings/surface_*
 for format in off obj ply stl; do
   seed fuzz_$format "$data"/*.$format "$data"/bad/*.$format "$root"/fuzz/findings/*.$format
 done

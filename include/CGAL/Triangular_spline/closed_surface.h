@@ -59,15 +59,20 @@ public:
   /// returns the sample of face `f` at barycentric weights `w`
   template <class Face>
   Surface_sample operator()(Face f, const std::array<double, 3>& w) const {
-    if (m_cached_face != std::size_t(f)) {
-      m_patch = convert_patch<CGAL::Simple_cartesian<double>>(m_surface.patch(f));
-      m_cached_face = std::size_t(f);
+    // two cached patches: the measures alternate between the two faces of an edge
+    std::size_t slot = m_face[0] == std::size_t(f) ? 0 : m_face[1] == std::size_t(f) ? 1 : 2;
+    if (slot == 2) {
+      slot = m_next;
+      m_next = 1 - m_next;
+      m_patch[slot] = convert_patch<CGAL::Simple_cartesian<double>>(m_surface.patch(f));
+      m_face[slot] = std::size_t(f);
     }
+    const Double_patch& patch = *m_patch[slot];
     const typename CGAL::Simple_cartesian<double>::Point_2 a(w[1], w[2]);
     Surface_sample s;
-    const auto value = m_patch->evaluate(a);
+    const auto value = patch.evaluate(a);
     s.point = {{value.x(), value.y(), value.z()}};
-    const Surface_curvature c = surface_curvature(*m_patch, a);
+    const Surface_curvature c = surface_curvature(patch, a);
     s.normal = c.normal;
     s.gaussian = c.gaussian;
     s.regular = c.regular;
@@ -78,8 +83,9 @@ private:
   using Double_patch =
       Bezier_triangle<CGAL::Simple_cartesian<double>, CGAL::Simple_cartesian<double>::Vector_3>;
   const Surface& m_surface;
-  mutable std::size_t m_cached_face = std::size_t(-1);
-  mutable std::optional<Double_patch> m_patch;
+  mutable std::array<std::size_t, 2> m_face{{std::size_t(-1), std::size_t(-1)}};
+  mutable std::array<std::optional<Double_patch>, 2> m_patch;
+  mutable std::size_t m_next = 0;
 };
 
 /*!
