@@ -16,7 +16,7 @@ namespace tspline {
 struct Pseudo_ag1_job {
   std::string input; // a closed triangle mesh (.off/.ply/.obj/.stl); or
   std::string shape; // a solid of the thesis or of the tests (see --help)
-  std::string preset = "thesis";
+  std::string preset = "smooth";
   CGAL::Triangular_spline::Pseudo_AG1_options options; // the preset with the overrides applied
   bool exact = false;    // exact rational arithmetic (needs rational options)
   int samples = 15;      // interior samples per edge for the normal jumps

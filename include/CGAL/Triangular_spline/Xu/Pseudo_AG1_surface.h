@@ -104,6 +104,13 @@ struct Pseudo_AG1_options {
     o.offsets = {{0, 0, 0}};
     return o;
   }
+  /// the thesis' method with the averaged diamond map, which §6.2.2 suggests when both end
+  /// diamonds are convex: on smooth meshes it divides the mean normal jump by 2 to 6
+  static Pseudo_AG1_options smooth() {
+    Pseudo_AG1_options o;
+    o.edge_map = Edge_map::AVERAGED_DIAMOND;
+    return o;
+  }
   /// every step rational: with an exact number type the surface is exact and certifiable
   static Pseudo_AG1_options exact() {
     Pseudo_AG1_options o = chapter5();
@@ -120,7 +127,7 @@ struct Pseudo_AG1_options {
 };
 
 /// \ingroup PkgTriangularSplinePseudoAG1
-/// \brief returns the options of the preset `name` ("thesis", "chapter5", "exact").
+/// \brief returns the options of the preset `name` ("thesis", "smooth", "chapter5", "exact").
 /// \throws Invalid_input for another name
 /// \param name the preset name
 /// \returns the options
@@ -131,8 +138,10 @@ inline Pseudo_AG1_options pseudo_AG1_preset(const std::string& name) {
     return Pseudo_AG1_options::chapter5();
   if (name == "exact")
     return Pseudo_AG1_options::exact();
+  if (name == "smooth")
+    return Pseudo_AG1_options::smooth();
   throw Invalid_input("pseudo-AG1: unknown preset '" + name +
-                      "' (expected thesis, chapter5 or exact)");
+                      "' (expected thesis, smooth, chapter5 or exact)");
 }
 
 /*!
