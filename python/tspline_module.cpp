@@ -747,13 +747,22 @@ CGAL::Surface_mesh<typename K::Point_3> mesh_from_arrays(const Points& vertices,
   return mesh;
 }
 
+// The double nearest to x: `CGAL::to_double` of GMP rationals truncates.
+template <class FT>
+double nearest(const FT& x) {
+  if constexpr (std::is_same_v<FT, double>)
+    return x;
+  else
+    return TS::internal::nearest_double(x);
+}
+
 template <class Mesh>
 py::array_t<double> vertex_array(const Mesh& mesh) {
   py::array_t<double> result({static_cast<py::ssize_t>(mesh.number_of_vertices()), py::ssize_t(3)});
   auto r = result.template mutable_unchecked<2>();
   for (auto v : mesh.vertices())
     for (py::ssize_t c = 0; c < 3; ++c)
-      r(py::ssize_t(v.idx()), c) = CGAL::to_double(mesh.point(v)[int(c)]);
+      r(py::ssize_t(v.idx()), c) = nearest(mesh.point(v)[int(c)]);
   return result;
 }
 
@@ -855,7 +864,7 @@ public:
         double* row = out + std::size_t(f.idx()) * std::size_t(n) * 3;
         for (const auto& p : m_surface->control_net(f))
           for (int c = 0; c < 3; ++c)
-            *row++ = CGAL::to_double(p[c]);
+            *row++ = nearest(p[c]);
       }
     }
     return result;
@@ -1145,9 +1154,9 @@ public:
       const auto& p = s.corner_plane(v);
       const double length = std::sqrt(CGAL::to_double(p.normal.squared_length()));
       for (py::ssize_t c = 0; c < 3; ++c) {
-        corner.mutable_at(i, c) = CGAL::to_double(p.corner[int(c)]);
+        corner.mutable_at(i, c) = nearest(p.corner[int(c)]);
         normal.mutable_at(i, c) = CGAL::to_double(p.normal[int(c)]) / length;
-        centroid.mutable_at(i, c) = CGAL::to_double(p.centroid[int(c)]);
+        centroid.mutable_at(i, c) = nearest(p.centroid[int(c)]);
       }
       // H_v is along the unnormalized N_v: the signed distance of the plane from v
       offset.mutable_at(i) = CGAL::to_double(p.offset) / length;
@@ -1186,9 +1195,9 @@ public:
       const py::ssize_t i = static_cast<py::ssize_t>(e.idx());
       const auto& R = s.edge_relation(e);
       for (py::ssize_t c = 0; c < 3; ++c) {
-        relation.mutable_at(i, c) = CGAL::to_double(R.relation[std::size_t(c)]);
-        end_r.mutable_at(i, c) = CGAL::to_double(R.end_r[std::size_t(c)]);
-        end_s.mutable_at(i, c) = CGAL::to_double(R.end_s[std::size_t(c)]);
+        relation.mutable_at(i, c) = nearest(R.relation[std::size_t(c)]);
+        end_r.mutable_at(i, c) = nearest(R.end_r[std::size_t(c)]);
+        end_s.mutable_at(i, c) = nearest(R.end_s[std::size_t(c)]);
       }
       r_valid.mutable_at(i) = R.end_r_valid;
       s_valid.mutable_at(i) = R.end_s_valid;
