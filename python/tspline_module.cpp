@@ -9,13 +9,19 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
+#include <CGAL/Triangular_spline/Comparators/PN_triangles.h>
 #include <CGAL/Triangular_spline/Domain/Domain_locator.h>
 #include <CGAL/Triangular_spline/Domain/delaunay_domain.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
+#include <CGAL/Triangular_spline/IO/surface_file.h>
 #include <CGAL/Triangular_spline/Mann/mann_interpolant.h>
+#include <CGAL/Triangular_spline/Xu/Pseudo_AG1_surface.h>
 #include <CGAL/Triangular_spline/Xu/Spline_space.h>
 #include <CGAL/Triangular_spline/Xu/make_c1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Xu/pseudo_AG1_certificate.h>
+#include <CGAL/Triangular_spline/Xu/thesis_polyhedra.h>
 #include <CGAL/Triangular_spline/certify.h>
+#include <CGAL/Triangular_spline/closed_surface.h>
 #include <CGAL/Triangular_spline/evaluate.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
@@ -692,6 +698,665 @@ py::tuple blend(const py::array_t<double, py::array::c_style | py::array::forcec
   return py::make_tuple(points, triangles, properties);
 }
 
+// ---- Closed surfaces: pseudo-AG^1 (built or read from a file) and PN triangles --------------
+
+using Faces = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+
+// A closed triangle mesh from (n, 3) vertices and (m, 3) faces, vertex i and face f keeping
+// their numbers. Coordinates are checked before conversion (an exact number type cannot hold a
+// NaN); the library checks the rest (closed, manifold, valence, zero areas) and orients.
+template <class K>
+CGAL::Surface_mesh<typename K::Point_3> mesh_from_arrays(const Points& vertices, const Faces& faces,
+                                                         const std::string& context) {
+  using Point_3 = typename K::Point_3;
+  std::size_t n = 0, m = 0;
+  const double* xyz = rows(vertices, 3, "vertices", n);
+  if (faces.ndim() != 2 || faces.shape(1) != 3)
+    throw TS::Invalid_input("faces: expected an array of shape (m, 3)");
+  m = static_cast<std::size_t>(faces.shape(0));
+  const std::int64_t* abc = faces.data();
+  std::vector<Point_3> points;
+  points.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t c = 0; c < 3; ++c)
+      if (!std::isfinite(xyz[3 * i + c]))
+        throw TS::Invalid_input(context + ": vertex " + std::to_string(i) +
+                                " has a non-finite coordinate");
+    points.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+  }
+  std::vector<std::vector<std::size_t>> polygons(m);
+  for (std::size_t f = 0; f < m; ++f) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::int64_t v = abc[3 * f + c];
+      if (v < 0 || std::size_t(v) >= n)
+        throw TS::Invalid_input(context + ": face " + std::to_string(f) + " refers to vertex " +
+                                std::to_string(v) + ", not in [0, " + std::to_string(n) + ")");
+      polygons[f].push_back(std::size_t(v));
+    }
+    if (polygons[f][0] == polygons[f][1] || polygons[f][1] == polygons[f][2] ||
+        polygons[f][0] == polygons[f][2])
+      throw TS::Invalid_input(context + ": face " + std::to_string(f) + " repeats a vertex");
+  }
+  // the check of `tspline pseudo-ag1 --input`: diagnose rather than repair
+  if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+    throw TS::Invalid_input(context + ": not a manifold, consistently oriented triangle mesh (an "
+                                      "edge has more than two faces, a vertex several umbrellas, "
+                                      "or neighbouring faces disagree on the orientation)");
+  CGAL::Surface_mesh<Point_3> mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  return mesh;
+}
+
+// The double nearest to x: `CGAL::to_double` of GMP rationals truncates.
+template <class FT>
+double nearest(const FT& x) {
+  if constexpr (std::is_same_v<FT, double>)
+    return x;
+  else
+    return TS::internal::nearest_double(x);
+}
+
+template <class Mesh>
+py::array_t<double> vertex_array(const Mesh& mesh) {
+  py::array_t<double> result({static_cast<py::ssize_t>(mesh.number_of_vertices()), py::ssize_t(3)});
+  auto r = result.template mutable_unchecked<2>();
+  for (auto v : mesh.vertices())
+    for (py::ssize_t c = 0; c < 3; ++c)
+      r(py::ssize_t(v.idx()), c) = nearest(mesh.point(v)[int(c)]);
+  return result;
+}
+
+// The faces in vertices_around_face(halfedge(f)) order: the corner order of the patches.
+template <class Mesh>
+py::array_t<std::int64_t> face_array(const Mesh& mesh) {
+  py::array_t<std::int64_t> result(
+      {static_cast<py::ssize_t>(mesh.number_of_faces()), py::ssize_t(3)});
+  auto r = result.template mutable_unchecked<2>();
+  for (auto f : mesh.faces()) {
+    py::ssize_t c = 0;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      if (c < 3)
+        r(py::ssize_t(f.idx()), c++) = static_cast<std::int64_t>(v.idx());
+  }
+  return result;
+}
+
+template <class Surface>
+struct Is_pseudo_AG1 : std::false_type {};
+template <class K>
+struct Is_pseudo_AG1<TS::Pseudo_AG1_surface<K>> : std::true_type {};
+
+const char* corner_plane_normal_name(TS::Corner_plane_normal n) {
+  return n == TS::Corner_plane_normal::CENTROID  ? "centroid"
+         : n == TS::Corner_plane_normal::AVERAGE ? "average"
+                                                 : "area";
+}
+
+// A piecewise polynomial surface over a closed mesh, one parametric patch per face.
+class Closed_surface {
+public:
+  virtual ~Closed_surface() = default;
+  virtual py::array_t<double> vertices() const = 0;
+  virtual py::array_t<std::int64_t> faces() const = 0;
+  virtual py::array_t<std::int64_t> edges() const = 0;
+  virtual int degree() const = 0;
+  virtual bool exact() const = 0;
+  virtual std::string kind() const = 0;
+  virtual py::array_t<double> control_nets() const = 0;
+  virtual py::dict certify(double tolerance) const = 0;
+  virtual py::dict measure(int samples, int levels, std::optional<bool> self_check) const = 0;
+  virtual py::tuple tessellate(int levels) const = 0;
+  virtual py::tuple evaluate(const Faces& face_ids, const Points& weights) const = 0;
+  virtual void save(const std::string& path) const = 0;
+};
+
+// What only a constructed pseudo-AG^1 surface knows.
+class Pseudo_AG1 : public Closed_surface {
+public:
+  virtual py::dict info() const = 0;
+  virtual py::dict options() const = 0;
+  virtual py::dict corner_planes() const = 0;
+  virtual py::dict edge_relations() const = 0;
+};
+
+template <class Surface, class Base>
+class Closed_surface_impl : public Base {
+public:
+  using K = typename Surface::Geom_traits;
+  using FT = typename K::FT;
+  using Mesh = std::decay_t<decltype(std::declval<const Surface&>().mesh())>;
+
+  Closed_surface_impl(std::shared_ptr<const Surface> surface, std::string kind)
+      : m_surface(std::move(surface)), m_kind(std::move(kind)) {}
+
+  py::array_t<double> vertices() const override { return vertex_array(mesh()); }
+  py::array_t<std::int64_t> faces() const override { return face_array(mesh()); }
+  py::array_t<std::int64_t> edges() const override {
+    const Mesh& M = mesh();
+    py::array_t<std::int64_t> result(
+        {static_cast<py::ssize_t>(M.number_of_edges()), py::ssize_t(2)});
+    auto r = result.template mutable_unchecked<2>();
+    for (auto e : M.edges()) {
+      const auto h = TS::canonical_halfedge(e, M);
+      r(py::ssize_t(e.idx()), 0) = static_cast<std::int64_t>(M.source(h).idx());
+      r(py::ssize_t(e.idx()), 1) = static_cast<std::int64_t>(M.target(h).idx());
+    }
+    return result;
+  }
+  int degree() const override { return m_surface->degree(); }
+  bool exact() const override {
+    if constexpr (Is_pseudo_AG1<Surface>::value)
+      return m_surface->is_exact();
+    else
+      return CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
+  }
+  std::string kind() const override { return m_kind; }
+
+  py::array_t<double> control_nets() const override {
+    const Mesh& M = mesh();
+    const py::ssize_t F = static_cast<py::ssize_t>(M.number_of_faces());
+    const py::ssize_t n = static_cast<py::ssize_t>(TS::number_of_control_points(degree()));
+    py::array_t<double> result({F, n, py::ssize_t(3)});
+    double* out = result.mutable_data();
+    {
+      py::gil_scoped_release release;
+      for (auto f : M.faces()) {
+        double* row = out + std::size_t(f.idx()) * std::size_t(n) * 3;
+        for (const auto& p : m_surface->control_net(f))
+          for (int c = 0; c < 3; ++c)
+            *row++ = nearest(p[c]);
+      }
+    }
+    return result;
+  }
+
+  py::dict certify(double tolerance) const override {
+    if (!std::isfinite(tolerance))
+      throw TS::Invalid_input("tolerance must be a finite number");
+    TS::Pseudo_AG1_certificate c;
+    std::vector<bool> determined;
+    {
+      py::gil_scoped_release release;
+      if constexpr (Is_pseudo_AG1<Surface>::value) {
+        c = TS::certify_pseudo_AG1(*m_surface, tolerance);
+      } else {
+        // from the control nets alone: relations and corner planes recovered from the file
+        const TS::Pseudo_AG1_view<Surface> view(*m_surface);
+        c = TS::certify_pseudo_AG1(view, tolerance);
+        for (auto e : mesh().edges())
+          determined.push_back(view.relation_determined(e));
+      }
+    }
+    py::dict d;
+    d["verdict"] = !c.pseudo_AG1() ? "failed" : c.exact ? "proof" : "within_tolerance";
+    d["pseudo_ag1"] = c.pseudo_AG1();
+    d["exact"] = c.exact;
+    d["tolerance"] = c.tolerance;
+    d["number_of_edges"] = c.edges;
+    d["number_of_vertices"] = c.vertices;
+    d["c0_edges"] = c.c0_edges;
+    d["middle_edges"] = c.middle_edges;
+    d["ag1_edges"] = c.ag1_edges;
+    d["inadmissible_edges"] = c.inadmissible_edges;
+    d["coplanar_vertices"] = c.coplanar_vertices;
+    d["g1_vertices"] = c.g1_vertices;
+    d["max_edge_residual"] = c.max_edge_residual;
+    d["max_coplanarity"] = c.max_coplanarity;
+    const py::ssize_t E = static_cast<py::ssize_t>(c.per_edge.size());
+    py::array_t<bool> c0(E), middle(E), ag1(E), admissible(E), diamonds({E, py::ssize_t(5)});
+    py::array_t<std::int64_t> join_order(E);
+    py::array_t<double> residual(E), middle_residual(E);
+    for (py::ssize_t i = 0; i < E; ++i) {
+      const TS::Pseudo_AG1_edge_certificate& e = c.per_edge[std::size_t(i)];
+      c0.mutable_at(i) = e.c0;
+      middle.mutable_at(i) = e.middle;
+      ag1.mutable_at(i) = e.ag1;
+      admissible.mutable_at(i) = e.admissible;
+      for (py::ssize_t k = 0; k < 5; ++k)
+        diamonds.mutable_at(i, k) = e.diamonds[std::size_t(k)];
+      join_order.mutable_at(i) = e.join_order;
+      residual.mutable_at(i) = e.max_residual;
+      middle_residual.mutable_at(i) = e.middle_residual;
+    }
+    py::dict edges;
+    edges["vertices"] = this->edges();
+    edges["c0"] = c0;
+    edges["middle"] = middle;
+    edges["ag1"] = ag1;
+    edges["diamonds"] = diamonds;
+    edges["admissible"] = admissible;
+    edges["join_order"] = join_order;
+    edges["residual"] = residual;
+    edges["middle_residual"] = middle_residual;
+    if (!determined.empty()) {
+      py::array_t<bool> det(E);
+      for (py::ssize_t i = 0; i < E; ++i)
+        det.mutable_at(i) = determined[std::size_t(i)];
+      edges["relation_determined"] = det;
+    }
+    d["edges"] = edges;
+    return d;
+  }
+
+  py::dict measure(int samples, int levels, std::optional<bool> self_check) const override {
+    if (levels < 0 || levels > 6)
+      throw TS::Invalid_input("measure: levels must be in [0, 6], got " + std::to_string(levels));
+    // as `tspline pseudo-ag1`: self-intersections only on tessellations of <= 400,000 triangles
+    const bool check =
+        self_check ? *self_check : (mesh().number_of_faces() << (2 * levels)) <= 400000;
+    TS::Closed_surface_measures m;
+    {
+      py::gil_scoped_release release;
+      const TS::Patch_sampler<Surface> sampler(*m_surface);
+      m = TS::measure_closed_surface(mesh(), sampler, samples, levels, check);
+    }
+    py::dict d;
+    d["edges"] = m.edges;
+    d["samples_per_edge"] = m.samples_per_edge;
+    d["max_jump_deg"] = m.max_jump_deg;
+    d["mean_edge_max_jump_deg"] = m.mean_edge_max_jump_deg;
+    d["mean_jump_deg"] = m.mean_jump_deg;
+    d["rms_jump_deg"] = m.rms_jump_deg;
+    d["p95_jump_deg"] = m.p95_jump_deg;
+    d["max_unoriented_jump_deg"] = m.max_unoriented_jump_deg;
+    d["vertex_max_jump_deg"] = m.vertex_max_jump_deg;
+    d["input_mean_bend_deg"] = m.mean_input_bend_deg;
+    d["volume"] = m.volume;
+    d["input_volume"] = m.input_volume;
+    d["volume_ratio"] = m.volume_ratio;
+    d["hausdorff_rel"] = m.hausdorff_rel;
+    d["rms_distance_rel"] = m.rms_distance_rel;
+    d["inside_fraction"] = m.inside_fraction;
+    d["folded_samples"] = m.folded_samples;
+    d["singular_samples"] = m.singular_samples;
+    d["self_intersecting"] = check ? py::object(py::bool_(m.self_intersecting)) : py::none();
+    d["gaussian_min"] = m.gaussian_min;
+    d["gaussian_max"] = m.gaussian_max;
+    d["tessellation_faces"] = m.tessellation_faces;
+    d["edge_max_jump_deg"] = py::array_t<double>(
+        static_cast<py::ssize_t>(m.edge_max_jump_deg.size()), m.edge_max_jump_deg.data());
+    d["edge_mean_jump_deg"] = py::array_t<double>(
+        static_cast<py::ssize_t>(m.edge_mean_jump_deg.size()), m.edge_mean_jump_deg.data());
+    return d;
+  }
+
+  py::tuple tessellate(int levels) const override {
+    TS::Closed_tessellation t;
+    {
+      py::gil_scoped_release release;
+      const TS::Patch_sampler<Surface> sampler(*m_surface);
+      t = TS::tessellate_closed_surface(mesh(), sampler, levels);
+    }
+    const py::ssize_t V = static_cast<py::ssize_t>(t.mesh.number_of_vertices());
+    py::array_t<double> normals({V, py::ssize_t(3)}), gaussian(V);
+    for (py::ssize_t i = 0; i < V; ++i) {
+      for (py::ssize_t c = 0; c < 3; ++c)
+        normals.mutable_at(i, c) = t.normals[std::size_t(i)][std::size_t(c)];
+      gaussian.mutable_at(i) = t.gaussian[std::size_t(i)];
+    }
+    return py::make_tuple(vertex_array(t.mesh), face_array(t.mesh), normals, gaussian);
+  }
+
+  py::tuple evaluate(const Faces& face_ids, const Points& weights) const override {
+    const std::size_t F = mesh().number_of_faces();
+    if (face_ids.ndim() != 1)
+      throw TS::Invalid_input("face_ids: expected an array of shape (k,)");
+    const std::size_t k = static_cast<std::size_t>(face_ids.shape(0));
+    std::size_t nw = 0;
+    const double* w = rows(weights, 3, "bary", nw);
+    if (nw != k)
+      throw TS::Invalid_input("evaluate: " + std::to_string(k) + " faces but " +
+                              std::to_string(nw) + " rows of barycentric weights");
+    const std::int64_t* ids = face_ids.data();
+    py::array_t<double> points({static_cast<py::ssize_t>(k), py::ssize_t(3)});
+    py::array_t<double> normals({static_cast<py::ssize_t>(k), py::ssize_t(3)});
+    double* p = points.mutable_data();
+    double* n = normals.mutable_data();
+    {
+      py::gil_scoped_release release;
+      for (std::size_t i = 0; i < k; ++i) {
+        if (ids[i] < 0 || std::size_t(ids[i]) >= F)
+          throw TS::Invalid_input("evaluate: face " + std::to_string(ids[i]) + " not in [0, " +
+                                  std::to_string(F) + ")");
+        const double s = w[3 * i] + w[3 * i + 1] + w[3 * i + 2];
+        if (!std::isfinite(s) || std::abs(s - 1) > 1e-9)
+          throw TS::Invalid_input("evaluate: the barycentric weights of row " + std::to_string(i) +
+                                  " must be finite and sum to 1");
+      }
+      // sorted by face: the sampler converts each patch once
+      std::vector<std::size_t> order(k);
+      for (std::size_t i = 0; i < k; ++i)
+        order[i] = i;
+      std::stable_sort(order.begin(), order.end(),
+                       [ids](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
+      const TS::Patch_sampler<Surface> sampler(*m_surface);
+      for (std::size_t i : order) {
+        const TS::Surface_sample s =
+            sampler(typename Mesh::Face_index(typename Mesh::size_type(ids[i])),
+                    std::array<double, 3>{{w[3 * i], w[3 * i + 1], w[3 * i + 2]}});
+        for (std::size_t c = 0; c < 3; ++c) {
+          p[3 * i + c] = s.point[c];
+          n[3 * i + c] = s.regular ? s.normal[c] : std::numeric_limits<double>::quiet_NaN();
+        }
+      }
+    }
+    return py::make_tuple(points, normals);
+  }
+
+  void save(const std::string& path) const override {
+    py::gil_scoped_release release;
+    std::ofstream file(path);
+    if (!file)
+      throw std::runtime_error("cannot write '" + path + "'");
+    TS::write_surface_file(file, *m_surface);
+    file.close();
+    if (!file)
+      throw std::runtime_error("writing '" + path + "' failed");
+  }
+
+protected:
+  const Mesh& mesh() const { return m_surface->mesh(); }
+  std::shared_ptr<const Surface> m_surface;
+  std::string m_kind;
+};
+
+template <class K>
+class Pseudo_AG1_impl : public Closed_surface_impl<TS::Pseudo_AG1_surface<K>, Pseudo_AG1> {
+  using Base = Closed_surface_impl<TS::Pseudo_AG1_surface<K>, Pseudo_AG1>;
+
+public:
+  Pseudo_AG1_impl(std::shared_ptr<const TS::Pseudo_AG1_surface<K>> surface, std::string preset)
+      : Base(std::move(surface), "pseudo-AG1"), m_preset(std::move(preset)) {}
+
+  py::dict info() const override {
+    const TS::Pseudo_AG1_surface<K>& s = *this->m_surface;
+    const auto& summary = s.mesh_summary();
+    py::dict d;
+    d["vertices"] = summary.vertices;
+    d["edges"] = summary.edges;
+    d["faces"] = summary.faces;
+    d["components"] = summary.components.size();
+    long euler = 0;
+    py::list genus;
+    for (const auto& c : summary.components) {
+      euler += c.euler;
+      genus.append(c.genus);
+    }
+    d["euler"] = euler;
+    d["genus"] = genus; // per component
+    d["reoriented"] = summary.reoriented;
+    d["exact"] = s.is_exact();
+    std::size_t recentred = 0, folded = 0, equalised = 0, fallback = 0, inverted = 0;
+    std::size_t averaged = 0, dipping = 0;
+    for (auto v : s.mesh().vertices()) {
+      const auto& p = s.corner_plane(v);
+      recentred += p.recentred;
+      folded += p.folded_projection;
+      equalised += p.equalised;
+      fallback += p.normal_fallback;
+      inverted += p.inverted_corner;
+    }
+    for (auto e : s.mesh().edges()) {
+      averaged += s.edge_relation(e).averaged_fallback;
+      dipping += s.dip(e) > 0;
+    }
+    py::dict flags;
+    flags["recentred_vertices"] = recentred;
+    flags["folded_projections"] = folded;
+    flags["equalised_umbrellas"] = equalised;
+    flags["normal_fallbacks"] = fallback;
+    flags["inverted_corners"] = inverted;
+    flags["averaged_map_fallbacks"] = averaged;
+    flags["shrinking_rounds"] = s.shrinking_rounds();
+    flags["reoriented_components"] = summary.reoriented;
+    flags["dipping_edges"] = dipping;
+    d["flags"] = flags;
+    return d;
+  }
+
+  py::dict options() const override {
+    const TS::Pseudo_AG1_options& o = this->m_surface->options();
+    py::dict d;
+    d["preset"] = m_preset;
+    d["normal"] = corner_plane_normal_name(o.normal);
+    d["tau"] = o.plane_position;
+    d["undulation_gain"] = o.undulation_gain;
+    d["threshold_deg"] = o.undulation_threshold * 180 / CGAL_PI;
+    d["placement"] = o.placement == TS::Star_placement::UMBRELLA ? "umbrella" : "projection";
+    d["angles"] = o.angles == TS::Umbrella_angles::EQUAL ? "equal" : "proportional";
+    d["lengths"] = o.lengths == TS::Umbrella_lengths::RIGID          ? "rigid"
+                   : o.lengths == TS::Umbrella_lengths::PROPORTIONAL ? "proportional"
+                                                                     : "equal";
+    d["rotation"] =
+        o.rotation == TS::Umbrella_rotation::LEAST_SQUARES ? "least-squares" : "first-star";
+    d["recentering"] = o.recentering;
+    d["star_scale"] = o.star_scale;
+    d["shrink"] = o.automatic_shrinking ? "auto" : "none";
+    d["offsets"] = py::make_tuple(o.offsets[0], o.offsets[1], o.offsets[2]);
+    d["inner"] = o.inner == TS::Inner_placement::NORMAL_OFFSET ? "offset" : "cross-edge";
+    d["edge_map"] = o.edge_map == TS::Edge_map::PARALLELOGRAM ? "parallelogram" : "averaged";
+    d["flip"] = o.flips == TS::Flip_rule::SYMMETRIC     ? "symmetric"
+                : o.flips == TS::Flip_rule::LARGER_FACE ? "larger-face"
+                                                        : "lower-index";
+    d["rational"] = o.is_rational();
+    return d;
+  }
+
+  py::dict corner_planes() const override {
+    const TS::Pseudo_AG1_surface<K>& s = *this->m_surface;
+    const py::ssize_t V = static_cast<py::ssize_t>(s.mesh().number_of_vertices());
+    py::array_t<double> corner({V, py::ssize_t(3)}), normal({V, py::ssize_t(3)});
+    py::array_t<double> centroid({V, py::ssize_t(3)}), offset(V), dihedral(V), scale(V);
+    py::array_t<bool> recentred(V), folded(V), equalised(V), fallback(V), inverted(V);
+    py::list used;
+    for (auto v : s.mesh().vertices()) {
+      const py::ssize_t i = static_cast<py::ssize_t>(v.idx());
+      const auto& p = s.corner_plane(v);
+      const double length = std::sqrt(CGAL::to_double(p.normal.squared_length()));
+      for (py::ssize_t c = 0; c < 3; ++c) {
+        corner.mutable_at(i, c) = nearest(p.corner[int(c)]);
+        normal.mutable_at(i, c) = CGAL::to_double(p.normal[int(c)]) / length;
+        centroid.mutable_at(i, c) = nearest(p.centroid[int(c)]);
+      }
+      // H_v is along the unnormalized N_v: the signed distance of the plane from v
+      offset.mutable_at(i) = CGAL::to_double(p.offset) / length;
+      dihedral.mutable_at(i) = p.mean_dihedral * 180 / CGAL_PI;
+      scale.mutable_at(i) = p.star_scale;
+      recentred.mutable_at(i) = p.recentred;
+      folded.mutable_at(i) = p.folded_projection;
+      equalised.mutable_at(i) = p.equalised;
+      fallback.mutable_at(i) = p.normal_fallback;
+      inverted.mutable_at(i) = p.inverted_corner;
+      used.append(corner_plane_normal_name(p.normal_used));
+    }
+    py::dict d;
+    d["corner"] = corner;
+    d["normal"] = normal;
+    d["distance"] = offset;
+    d["centroid"] = centroid;
+    d["mean_dihedral_deg"] = dihedral;
+    d["star_scale"] = scale;
+    d["normal_used"] = used;
+    d["recentred"] = recentred;
+    d["folded_projection"] = folded;
+    d["equalised"] = equalised;
+    d["normal_fallback"] = fallback;
+    d["inverted_corner"] = inverted;
+    return d;
+  }
+
+  py::dict edge_relations() const override {
+    const TS::Pseudo_AG1_surface<K>& s = *this->m_surface;
+    const py::ssize_t E = static_cast<py::ssize_t>(s.mesh().number_of_edges());
+    py::array_t<double> relation({E, py::ssize_t(3)}), end_r({E, py::ssize_t(3)});
+    py::array_t<double> end_s({E, py::ssize_t(3)}), dihedral(E), dip(E);
+    py::array_t<bool> r_valid(E), s_valid(E), averaged(E);
+    for (auto e : s.mesh().edges()) {
+      const py::ssize_t i = static_cast<py::ssize_t>(e.idx());
+      const auto& R = s.edge_relation(e);
+      for (py::ssize_t c = 0; c < 3; ++c) {
+        relation.mutable_at(i, c) = nearest(R.relation[std::size_t(c)]);
+        end_r.mutable_at(i, c) = nearest(R.end_r[std::size_t(c)]);
+        end_s.mutable_at(i, c) = nearest(R.end_s[std::size_t(c)]);
+      }
+      r_valid.mutable_at(i) = R.end_r_valid;
+      s_valid.mutable_at(i) = R.end_s_valid;
+      averaged.mutable_at(i) = R.averaged_fallback;
+      dihedral.mutable_at(i) = R.dihedral * 180 / CGAL_PI;
+      dip.mutable_at(i) = s.dip(e);
+    }
+    py::dict d;
+    d["vertices"] = this->edges();
+    d["relation"] = relation;
+    d["end_r"] = end_r;
+    d["end_s"] = end_s;
+    d["end_r_valid"] = r_valid;
+    d["end_s_valid"] = s_valid;
+    d["averaged_fallback"] = averaged;
+    d["dihedral_deg"] = dihedral;
+    d["dip"] = dip;
+    return d;
+  }
+
+private:
+  std::string m_preset;
+};
+
+template <class Enum>
+Enum option_choice(const std::string& key, const py::handle& value,
+                   const std::vector<std::pair<const char*, Enum>>& choices) {
+  const std::string given = py::str(value);
+  std::string names;
+  for (const auto& [name, e] : choices) {
+    if (given == name)
+      return e;
+    names += (names.empty() ? "" : ", ") + std::string(name);
+  }
+  throw TS::Invalid_input("pseudo-AG1: " + key + " must be one of " + names + ", not '" + given +
+                          "'");
+}
+
+// The preset with the overrides of AG1.md §4.1 (the names of `tspline pseudo-ag1`'s options).
+TS::Pseudo_AG1_options pseudo_AG1_options(const std::string& preset, const py::dict& overrides) {
+  TS::Pseudo_AG1_options o = TS::pseudo_AG1_preset(preset);
+  for (const auto& [k, value] : overrides) {
+    const std::string key = py::str(k);
+    auto number = [&]() {
+      return py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
+    };
+    if (key == "normal")
+      o.normal =
+          option_choice<TS::Corner_plane_normal>(key, value,
+                                                 {{"area", TS::Corner_plane_normal::AREA_WEIGHTED},
+                                                  {"average", TS::Corner_plane_normal::AVERAGE},
+                                                  {"centroid", TS::Corner_plane_normal::CENTROID}});
+    else if (key == "tau")
+      o.plane_position = number();
+    else if (key == "undulation_gain")
+      o.undulation_gain = number();
+    else if (key == "threshold_deg")
+      o.undulation_threshold = number() * CGAL_PI / 180;
+    else if (key == "placement")
+      o.placement =
+          option_choice<TS::Star_placement>(key, value,
+                                            {{"umbrella", TS::Star_placement::UMBRELLA},
+                                             {"projection", TS::Star_placement::PROJECTION}});
+    else if (key == "lengths")
+      o.lengths =
+          option_choice<TS::Umbrella_lengths>(key, value,
+                                              {{"rigid", TS::Umbrella_lengths::RIGID},
+                                               {"proportional", TS::Umbrella_lengths::PROPORTIONAL},
+                                               {"equal", TS::Umbrella_lengths::EQUAL}});
+    else if (key == "angles")
+      o.angles =
+          option_choice<TS::Umbrella_angles>(key, value,
+                                             {{"proportional", TS::Umbrella_angles::PROPORTIONAL},
+                                              {"equal", TS::Umbrella_angles::EQUAL}});
+    else if (key == "rotation")
+      o.rotation = option_choice<TS::Umbrella_rotation>(
+          key, value,
+          {{"least-squares", TS::Umbrella_rotation::LEAST_SQUARES},
+           {"first-star", TS::Umbrella_rotation::FIRST_STAR}});
+    else if (key == "recentering")
+      o.recentering = py::bool_(py::reinterpret_borrow<py::object>(value));
+    else if (key == "star_scale")
+      o.star_scale = number();
+    else if (key == "shrink")
+      o.automatic_shrinking = option_choice<bool>(key, value, {{"none", false}, {"auto", true}});
+    else if (key == "offsets") {
+      const auto v = py::reinterpret_borrow<py::object>(value).cast<std::vector<double>>();
+      if (v.size() != 3)
+        throw TS::Invalid_input("pseudo-AG1: offsets must be three numbers (stars, inner, flips)");
+      o.offsets = {{v[0], v[1], v[2]}};
+    } else if (key == "inner")
+      o.inner = option_choice<TS::Inner_placement>(
+          key, value,
+          {{"offset", TS::Inner_placement::NORMAL_OFFSET},
+           {"cross-edge", TS::Inner_placement::CROSS_EDGE_PLANES}});
+    else if (key == "edge_map")
+      o.edge_map = option_choice<TS::Edge_map>(key, value,
+                                               {{"parallelogram", TS::Edge_map::PARALLELOGRAM},
+                                                {"averaged", TS::Edge_map::AVERAGED_DIAMOND}});
+    else if (key == "flip")
+      o.flips = option_choice<TS::Flip_rule>(key, value,
+                                             {{"symmetric", TS::Flip_rule::SYMMETRIC},
+                                              {"larger-face", TS::Flip_rule::LARGER_FACE},
+                                              {"lower-index", TS::Flip_rule::LOWER_INDEX_FACE}});
+    else
+      throw py::type_error("PseudoAG1Surface: unexpected keyword argument '" + key + "'");
+  }
+  return o;
+}
+
+template <class K>
+std::shared_ptr<Pseudo_AG1> make_pseudo_AG1(const Points& vertices, const Faces& faces,
+                                            const std::string& preset,
+                                            const TS::Pseudo_AG1_options& options) {
+  std::shared_ptr<const TS::Pseudo_AG1_surface<K>> surface;
+  {
+    py::gil_scoped_release release;
+    const auto mesh = mesh_from_arrays<K>(vertices, faces, "pseudo-AG1");
+    surface = std::make_shared<const TS::Pseudo_AG1_surface<K>>(mesh, options);
+  }
+  return std::make_shared<Pseudo_AG1_impl<K>>(surface, preset);
+}
+
+template <class K>
+std::shared_ptr<Closed_surface> load_surface(const std::string& path) {
+  std::shared_ptr<const TS::Surface_file<K>> file;
+  {
+    py::gil_scoped_release release;
+    std::ifstream in(path);
+    if (!in)
+      throw TS::Invalid_input("cannot open '" + path + "'");
+    file = std::make_shared<const TS::Surface_file<K>>(TS::read_surface_file<K>(in, path));
+  }
+  return std::make_shared<Closed_surface_impl<TS::Surface_file<K>, Closed_surface>>(file, "file");
+}
+
+// PN triangles (Vlachos et al. 2001) of a closed mesh, as a surface of cubic patches.
+std::shared_ptr<Closed_surface> pn_triangles(const Points& vertices, const Faces& faces) {
+  using File = TS::Surface_file<Fast>;
+  std::shared_ptr<const File> file;
+  {
+    py::gil_scoped_release release;
+    auto mesh = mesh_from_arrays<Fast>(vertices, faces, "PN triangles");
+    TS::prepare_closed_triangle_mesh(mesh, "PN triangles");
+    const auto patches = TS::pn_triangles<Fast>(mesh);
+    std::vector<std::vector<Fast::Vector_3>> nets;
+    nets.reserve(patches.size());
+    for (const auto& p : patches)
+      nets.push_back(p.control_points());
+    file = std::make_shared<const File>(std::move(mesh), 3, std::move(nets), false);
+  }
+  return std::make_shared<Closed_surface_impl<File, Closed_surface>>(file, "PN triangles");
+}
+
+py::tuple thesis_polyhedron(const std::string& name) {
+  const auto mesh = TS::thesis_polyhedron<Fast>(name);
+  return py::make_tuple(vertex_array(mesh), face_array(mesh));
+}
+
 } // namespace
 
 PYBIND11_MODULE(_core, m) {
@@ -738,5 +1403,50 @@ PYBIND11_MODULE(_core, m) {
       py::arg("path"), py::arg("exact"));
   m.def("blend", &blend, py::arg("vertices"), py::arg("faces"), py::arg("order"),
         py::arg("variant"), py::arg("vertex_surface"), py::arg("resolution"));
+
+  py::class_<Closed_surface, std::shared_ptr<Closed_surface>>(m, "ClosedSurface")
+      .def("vertices", &Closed_surface::vertices)
+      .def("faces", &Closed_surface::faces)
+      .def("edges", &Closed_surface::edges)
+      .def("control_nets", &Closed_surface::control_nets)
+      .def("certify", &Closed_surface::certify, py::arg("tolerance"))
+      .def("measure", &Closed_surface::measure, py::arg("samples"), py::arg("levels"),
+           py::arg("self_intersections"))
+      .def("tessellate", &Closed_surface::tessellate, py::arg("levels"))
+      .def("evaluate", &Closed_surface::evaluate, py::arg("face_ids"), py::arg("bary"))
+      .def("save", &Closed_surface::save, py::arg("path"))
+      .def_property_readonly("degree", &Closed_surface::degree)
+      .def_property_readonly("exact", &Closed_surface::exact)
+      .def_property_readonly("kind", &Closed_surface::kind);
+  py::class_<Pseudo_AG1, Closed_surface, std::shared_ptr<Pseudo_AG1>>(m, "PseudoAG1")
+      .def("info", &Pseudo_AG1::info)
+      .def("options", &Pseudo_AG1::options)
+      .def("corner_planes", &Pseudo_AG1::corner_planes)
+      .def("edge_relations", &Pseudo_AG1::edge_relations);
+  m.def(
+      "pseudo_ag1",
+      [](const Points& vertices, const Faces& faces, const std::string& preset, bool exact,
+         const py::dict& overrides) -> std::shared_ptr<Pseudo_AG1> {
+        const TS::Pseudo_AG1_options options = pseudo_AG1_options(preset, overrides);
+        if (!exact)
+          return make_pseudo_AG1<Fast>(vertices, faces, preset, options);
+        if (!options.is_rational())
+          throw TS::Invalid_input(
+              "pseudo-AG1: exact=True needs rational options (projection placement, no offsets, "
+              "undulation gain 0, area or centroid normals, offset inner points, no shrinking): "
+              "use preset 'exact' or 'chapter5'");
+        return make_pseudo_AG1<Exact>(vertices, faces, preset, options);
+      },
+      py::arg("vertices"), py::arg("faces"), py::arg("preset"), py::arg("exact"),
+      py::arg("overrides"));
+  m.def(
+      "load_surface",
+      [](const std::string& path, bool exact) {
+        return exact ? load_surface<Exact>(path) : load_surface<Fast>(path);
+      },
+      py::arg("path"), py::arg("exact"));
+  m.def("pn_triangles", &pn_triangles, py::arg("vertices"), py::arg("faces"));
+  m.def("thesis_polyhedron", &thesis_polyhedron, py::arg("name"));
+  m.def("thesis_polyhedron_names", &TS::thesis_polyhedron_names);
   m.attr("__version__") = TRIANGULAR_SPLINE_VERSION;
 }

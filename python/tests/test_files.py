@@ -46,7 +46,8 @@ def test_load_cli_file(data_dir):
 CLI = os.environ.get("TSPLINE_CLI")
 
 
-@pytest.mark.skipif(not CLI, reason="the tspline executable is not built (TSPLINE_CLI unset)")
+@pytest.mark.skipif(not (CLI and os.path.exists(CLI)),
+                    reason="the tspline executable is not built (TSPLINE_CLI unset or missing)")
 @pytest.mark.parametrize("exact", [False, True])
 def test_values_equal_the_cli(tmp_path, data_dir, exact):
     xyz = f"{data_dir}/franke_100.xyz"

@@ -3,7 +3,9 @@
 The Python face of the C++ library Triangular_spline: Xu's C^1 quintic spline over the
 Delaunay triangulation of the data (``C1Interpolator``, in the role of scipy's
 ``CloughTocher2DInterpolator``), Mann's interpolant (``MannInterpolator``), saved splines
-(``load``). Every call into the library releases the GIL.
+(``load``), Fang's blend of a mesh (``blend``), and Xu's pseudo-AG^1 surfaces over closed
+triangle meshes (``PseudoAG1Surface``, with ``pn_triangles`` as a comparator). Every call
+into the library releases the GIL.
 
 >>> import numpy as np, tspline
 >>> rng = np.random.default_rng(0)
@@ -27,7 +29,9 @@ import numpy as _np
 
 from . import _core
 
-__all__ = ["C1Interpolator", "MannInterpolator", "Interpolator", "load", "blend", "__version__"]
+__all__ = ["C1Interpolator", "MannInterpolator", "Interpolator", "load", "blend",
+           "ClosedSurface", "PseudoAG1Surface", "load_surface", "pn_triangles",
+           "thesis_polyhedron", "thesis_polyhedron_names", "control_point_index", "__version__"]
 
 __version__ = _core.__version__
 
@@ -359,3 +363,329 @@ def blend(vertices, faces, *, order=2, variant="open", vertex_surface="least", r
     points, triangles, properties = _core.blend(v, f, int(order), variant, vertex_surface,
                                                 int(resolution))
     return (points, triangles, properties) if return_properties else (points, triangles)
+
+
+# ---- Closed surfaces: pseudo-AG^1 (Xu ch. 5-6), surface files, PN triangles -------------------
+
+_PRESETS = ("thesis", "chapter5", "exact")
+
+
+def _as_mesh(vertices, faces):
+    """(n, 3) float64 vertices and (m, 3) int64 faces, checked."""
+    v = _np.asarray(vertices, dtype=float)
+    if v.ndim != 2 or v.shape[1] != 3:
+        raise ValueError(f"vertices: expected an array of shape (n, 3), got shape {v.shape}")
+    f = _np.asarray(faces)
+    if f.ndim != 2 or f.shape[1] != 3:
+        raise ValueError(f"faces: expected an array of shape (m, 3), got shape {f.shape}")
+    if f.size and f.dtype.kind not in "iu":
+        raise ValueError(f"faces: expected integer vertex indices, got dtype {f.dtype}")
+    return _np.ascontiguousarray(v), _np.ascontiguousarray(f, dtype=_np.int64)
+
+
+def control_point_index(i, j, k):
+    """The position of the control point with multi-index (i, j, k) in a net of degree
+    i + j + k (Xu's Table 2.3 order, the order of ``ClosedSurface.control_nets()``): i counts
+    the face's first vertex, j its second, k its third. Rows of constant i are stored one
+    after the other, j increasing: (0, 0, m), (0, 1, m - 1), ..., (0, m, 0), (1, 0, m - 1), ...,
+    (m, 0, 0).
+
+    >>> import tspline
+    >>> [tspline.control_point_index(*c) for c in [(0, 0, 5), (0, 5, 0), (5, 0, 0), (1, 1, 3)]]
+    [0, 5, 20, 7]
+    """
+    m = i + j + k
+    if min(i, j, k) < 0:
+        raise ValueError(f"control_point_index: ({i}, {j}, {k}) has a negative component")
+    return i * (m + 1) - i * (i - 1) // 2 + j
+
+
+class ClosedSurface:
+    """A piecewise polynomial surface over a closed triangle mesh: one parametric Bezier
+    patch per face. Built by ``PseudoAG1Surface``, ``load_surface`` or ``pn_triangles``.
+
+    Patch ``f`` is a polynomial over the unit triangle whose corners are the vertices
+    ``faces[f]``, in that order; ``control_nets()[f]`` holds its control points in Xu's
+    Table 2.3 order (``control_point_index``), ``evaluate(f, w)`` takes barycentric weights
+    of those three vertices.
+    """
+
+    def __init__(self, core):
+        self._core = core
+
+    @property
+    def vertices(self):
+        """The mesh's vertices, (n, 3)."""
+        return self._core.vertices()
+
+    @property
+    def faces(self):
+        """The faces as used by the patches, (m, 3): a rotation of each input face, reversed
+        for components that were reoriented outward. Corner a of patch f is ``faces[f, a]``."""
+        return self._core.faces()
+
+    @property
+    def edges(self):
+        """The edges, (E, 2) vertex indices, in the order of every per-edge array."""
+        return self._core.edges()
+
+    @property
+    def degree(self):
+        """The degree of the patches (5 for pseudo-AG^1, 3 for PN triangles)."""
+        return self._core.degree
+
+    @property
+    def exact(self):
+        """True if the control points are exact rationals (so ``certify()`` is a proof)."""
+        return self._core.exact
+
+    def control_nets(self):
+        """The control points, (m, (d+1)(d+2)/2, 3): (m, 21, 3) for quintic patches. Net f
+        is over ``faces[f]``; point (i, j, k) is at ``control_point_index(i, j, k)``, i, j, k
+        counting the face's first, second and third vertex: the corners (d,0,0), (0,d,0),
+        (0,0,d) are at positions -1, d and 0."""
+        return self._core.control_nets()
+
+    def certify(self, tolerance=None):
+        """The pseudo-AG^1 certificate, from the control nets (AG1.md §6 M3): per edge the
+        C^0 conditions and the five diamonds against the edge's relation, per vertex the
+        corner plane. Returns a dict: ``verdict`` (``"proof"``, ``"within_tolerance"``,
+        ``"failed"``), ``pseudo_ag1`` (C^0 and middle diamonds on every edge, G^1 at every
+        vertex), ``exact``, ``tolerance``, the counts ``c0_edges``, ``middle_edges``,
+        ``ag1_edges`` (all five diamonds: tangent planes agree along the edge),
+        ``inadmissible_edges``, ``g1_vertices``, ``coplanar_vertices``, ``number_of_edges``,
+        ``number_of_vertices``, ``max_edge_residual``, and ``edges``: per edge (order of
+        ``edges``) arrays ``vertices``, ``c0``, ``middle``, ``ag1``, ``diamonds`` (E, 5),
+        ``admissible``, ``join_order``, ``residual``, ``middle_residual``.
+
+        The verdicts are exact for an exact surface (``tolerance=None``); otherwise residuals
+        are compared with ``tolerance`` (default 1e-10 times the bounding-box diagonal). A
+        loaded file is certified from its nets alone: the edge relations are solved from the
+        middle diamonds (``edges["relation_determined"]``).
+        """
+        t = -1.0 if tolerance is None else float(tolerance)
+        if tolerance is not None and not t > 0:
+            raise ValueError(f"tolerance must be a number > 0 (or None), not {tolerance!r}")
+        return self._core.certify(t)
+
+    def measure(self, samples=15, levels=2, self_intersections=None):
+        """Normal jumps and shape (AG1.md §6 M1, M2, M5): the angle between the two patches'
+        normals at ``samples`` interior points of every edge and at the vertices, and the
+        shape on a tessellation with 4**levels triangles per face against the input mesh.
+
+        Returns a dict: ``max_jump_deg``, ``mean_jump_deg``, ``rms_jump_deg``,
+        ``p95_jump_deg``, ``mean_edge_max_jump_deg``, ``max_unoriented_jump_deg``,
+        ``vertex_max_jump_deg`` (0 up to round-off where the surface is G^1 at its vertices),
+        ``input_mean_bend_deg``, ``volume``, ``input_volume``, ``volume_ratio``,
+        ``hausdorff_rel`` and ``rms_distance_rel`` (relative to the input's diagonal),
+        ``inside_fraction``, ``folded_samples``, ``singular_samples``, ``self_intersecting``
+        (None when not checked: by default only up to 400,000 triangles), ``gaussian_min``,
+        ``gaussian_max``, ``tessellation_faces``, and per edge ``edge_max_jump_deg``,
+        ``edge_mean_jump_deg``. The numbers of ``tspline pseudo-ag1 --report``.
+        """
+        check = None if self_intersections is None else bool(self_intersections)
+        return self._core.measure(int(samples), int(levels), check)
+
+    def tessellate(self, levels=3):
+        """A watertight triangulation with 4**levels triangles per face (levels 0-8):
+        ``(points (V, 3), triangles (T, 3), normals (V, 3), gaussian (V,))``. Corner and edge
+        points are shared by the faces; triangle t lies on face ``t // 4**levels``."""
+        return self._core.tessellate(int(levels))
+
+    def evaluate(self, face_ids, bary):
+        """Points and unit normals of the patches: ``face_ids`` (k,) face indices, ``bary``
+        (k, 3) barycentric weights (summing to 1) of the face's vertices ``faces[f]``.
+        Returns ``(points (k, 3), normals (k, 3))``; a normal is NaN where the patch is
+        singular. A single face and weight triple give (3,) arrays."""
+        f = _np.asarray(face_ids)
+        w = _np.asarray(bary, dtype=float)
+        single = f.ndim == 0 and w.ndim == 1
+        f = _np.atleast_1d(f)
+        w = _np.atleast_2d(w)
+        if f.ndim != 1 or (f.size and f.dtype.kind not in "iu"):
+            raise ValueError(f"face_ids: expected integer face indices of shape (k,), got "
+                             f"{f.dtype} of shape {f.shape}")
+        if w.ndim != 2 or w.shape[1] != 3:
+            raise ValueError(f"bary: expected an array of shape (k, 3), got shape {w.shape}")
+        points, normals = self._core.evaluate(_np.ascontiguousarray(f, dtype=_np.int64),
+                                              _np.ascontiguousarray(w))
+        return (points[0], normals[0]) if single else (points, normals)
+
+    def save(self, path):
+        """Writes the surface as a tspline-surface file (mesh and nets; exact numbers for an
+        exact surface), read by ``load_surface``, ``tspline certify`` and ``tspline render``."""
+        self._core.save(str(path))
+
+    def __repr__(self):
+        return (f"<tspline.{type(self).__name__}: {self._core.kind}, degree {self.degree}, "
+                f"{len(self.vertices)} vertices, {len(self.faces)} faces, "
+                f"{'exact' if self.exact else 'double'}>")
+
+
+class PseudoAG1Surface(ClosedSurface):
+    """Xu's pseudo-AG^1 surface of a closed triangle mesh (thesis ch. 5-6; ``tspline
+    pseudo-ag1``): one quintic patch per face, C^0 everywhere, G^1 at every vertex, the three
+    middle diamonds of every edge on one affine relation. Tangent planes may jump inside the
+    edges; ``measure()`` says by how much, ``certify()`` which conditions hold.
+
+    Parameters
+    ----------
+    vertices : (n, 3) array_like
+        Finite coordinates.
+    faces : (m, 3) array_like of int
+        A closed, manifold, consistently oriented triangle mesh, counter-clockwise seen from
+        outside (components oriented inward are reversed: see ``reoriented`` and ``faces``).
+    preset : str
+        ``"thesis"`` (the method of §6.2: area-weighted normals, planes half-way, raised or
+        lowered by the mean dihedral angle, umbrella stars, normal offsets), ``"chapter5"``
+        (§5.4: planes through the centroids, projected stars, no offsets; every control point
+        a convex combination of the vertices) or ``"exact"`` (rational steps only).
+    exact : bool
+        Compute in exact rationals (``CGAL::Exact_rational``): ``certify()`` is then a proof.
+        Needs rational options (presets ``"exact"`` and ``"chapter5"``); unlike ``tspline
+        pseudo-ag1 --preset exact``, ``preset="exact"`` alone computes in double.
+    **overrides
+        Options of AG1.md §4.1 over the preset (the names of ``tspline pseudo-ag1``'s
+        options): ``normal`` (``"area"``, ``"average"``, ``"centroid"``), ``tau`` (plane
+        position, 0 through the vertex, 1 through the centroid), ``undulation_gain``,
+        ``threshold_deg``, ``placement`` (``"umbrella"``, ``"projection"``), ``lengths``,
+        ``angles``, ``rotation``, ``recentering`` (bool), ``star_scale`` in (0, 1],
+        ``shrink`` (``"none"``, ``"auto"``), ``offsets`` (stars, inner, flips), ``inner``
+        (``"offset"``, ``"cross-edge"``), ``edge_map`` (``"parallelogram"``,
+        ``"averaged"``), ``flip`` (``"symmetric"``, ``"larger-face"``, ``"lower-index"``).
+        The effective options are ``options``.
+
+    Raises
+    ------
+    ValueError
+        With the library's message: an open, non-manifold or inconsistently oriented mesh,
+        a non-finite coordinate, a zero-area face, wrong shapes, an option out of range,
+        ``exact=True`` with options that are not rational.
+    TypeError
+        An unknown keyword.
+
+    Examples
+    --------
+    The regular tetrahedron with the exact preset (AG1.md §8 C23): corner point
+    z_a = (13/15)(1, 1, 1), proved pseudo-AG^1, with no edge AG^1:
+
+    >>> import numpy as np, tspline
+    >>> v = [[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]]
+    >>> f = [[0, 1, 2], [0, 3, 1], [1, 3, 2], [2, 3, 0]]
+    >>> s = tspline.PseudoAG1Surface(v, f, preset="exact", exact=True)
+    >>> s.faces[0].tolist()                      # corner order of patch 0
+    [0, 1, 2]
+    >>> (s.control_nets()[0, tspline.control_point_index(5, 0, 0)] * 15).round(12).tolist()
+    [13.0, 13.0, 13.0]
+    >>> c = s.certify()
+    >>> c["verdict"], c["ag1_edges"], c["g1_vertices"]
+    ('proof', 0, 4)
+    >>> m = s.measure(samples=5, levels=1)
+    >>> bool(m["vertex_max_jump_deg"] < 1e-9), bool(m["max_jump_deg"] > 10)
+    (True, True)
+    >>> points, normals = s.evaluate([0, 0], [[1, 0, 0], [1/3, 1/3, 1/3]])
+    >>> (points[0] * 15).round(12).tolist()      # the patch interpolates its corner point
+    [13.0, 13.0, 13.0]
+    """
+
+    def __init__(self, vertices, faces, *, preset="thesis", exact=False, **overrides):
+        if preset not in _PRESETS:
+            raise ValueError(f"pseudo-AG1: unknown preset {preset!r} (expected thesis, "
+                             f"chapter5 or exact)")
+        v, f = _as_mesh(vertices, faces)
+        super().__init__(_core.pseudo_ag1(v, f, preset, bool(exact), dict(overrides)))
+
+    @property
+    def options(self):
+        """The options used (preset with overrides), as a dict; ``rational`` says whether
+        every step is a rational function of the input."""
+        return self._core.options()
+
+    @property
+    def info(self):
+        """What the construction found: counts, components, Euler characteristic, genus per
+        component, ``reoriented``, ``exact``, and ``flags`` (re-centred corners, folded
+        projections, equalised umbrellas, normal fallbacks, inverted corners, averaged-map
+        fallbacks, shrinking rounds, dipping edges), as ``tspline pseudo-ag1``."""
+        return self._core.info()
+
+    @property
+    def reoriented(self):
+        """The number of connected components whose faces were reversed to face outward."""
+        return self._core.info()["reoriented"]
+
+    def corner_planes(self):
+        """Per vertex (n rows): ``corner`` (z_v), unit ``normal``, ``distance`` of the plane
+        from the vertex along it, ``centroid`` of the first stars, ``mean_dihedral_deg``,
+        ``star_scale``, ``normal_used`` and the flags ``recentred``, ``folded_projection``,
+        ``equalised``, ``normal_fallback``, ``inverted_corner``."""
+        return self._core.corner_planes()
+
+    def edge_relations(self):
+        """Per edge (order of ``edges``, oriented r -> s = ``edges[e]``): the ``relation``
+        (lambda, mu, nu) of the middle diamonds, the end relations ``end_r``, ``end_s`` read
+        off the corner regions (the edge is AG^1 where all three agree) and their validity,
+        ``averaged_fallback``, the input's ``dihedral_deg`` and the ``dip`` of the edge
+        control polygon (positive: it bends against the input, Fig. 6.7)."""
+        return self._core.edge_relations()
+
+
+def load_surface(path, *, exact=False):
+    """Reads a tspline-surface file (``ClosedSurface.save``, ``tspline pseudo-ag1 --save``)
+    as a ``ClosedSurface``. ``exact=True`` reads the numbers exactly: the certificate of a
+    file written exactly is then a proof (that of a double file fails on its round-off: give
+    a tolerance).
+
+    >>> import os, tempfile, tspline
+    >>> v, f = tspline.thesis_polyhedron("octahedron")
+    >>> s = tspline.PseudoAG1Surface(v, f, preset="exact", exact=True)
+    >>> path = os.path.join(tempfile.mkdtemp(), "octahedron.surface")
+    >>> s.save(path)
+    >>> t = tspline.load_surface(path, exact=True)
+    >>> t.certify()["verdict"], bool((t.control_nets() == s.control_nets()).all())
+    ('proof', True)
+    """
+    return ClosedSurface(_core.load_surface(str(path), bool(exact)))
+
+
+def pn_triangles(vertices, faces):
+    """The curved PN triangles (Vlachos, Peters, Boyd, Mitchell 2001) of a closed triangle
+    mesh, the comparator of ``tspline pseudo-ag1``: one cubic patch per face from the
+    vertices and their area-weighted normals, C^0 but only G^0 along the edges. Returns a
+    ``ClosedSurface`` (degree 3): ``measure()`` gives the numbers of the report's
+    ``comparison.pn_triangles``, ``control_nets()`` the (m, 10, 3) nets. ``certify()`` is
+    for quintic pseudo-AG^1 surfaces and refuses it.
+
+    >>> import tspline
+    >>> v, f = tspline.thesis_polyhedron("icosahedron")
+    >>> pn = tspline.pn_triangles(v, f)
+    >>> pn.control_nets().shape
+    (20, 10, 3)
+    >>> ag1 = tspline.PseudoAG1Surface(v, f)
+    >>> bool(ag1.measure(levels=1)["mean_jump_deg"] < pn.measure(levels=1)["mean_jump_deg"])
+    True
+    """
+    v, f = _as_mesh(vertices, faces)
+    return ClosedSurface(_core.pn_triangles(v, f))
+
+
+def thesis_polyhedron(name):
+    """The test solids of ``tspline pseudo-ag1 --shape`` as ``(vertices (n, 3), faces (m, 3))``,
+    faces counter-clockwise seen from outside; ``thesis_polyhedron_names()`` lists them.
+
+    >>> import tspline
+    >>> v, f = tspline.thesis_polyhedron("tetrahedron")
+    >>> v.tolist(), f.shape
+    ([[1.0, 1.0, 1.0], [1.0, -1.0, -1.0], [-1.0, 1.0, -1.0], [-1.0, -1.0, 1.0]], (4, 3))
+    """
+    return _core.thesis_polyhedron(str(name))
+
+
+def thesis_polyhedron_names():
+    """The names ``thesis_polyhedron`` accepts.
+
+    >>> import tspline
+    >>> tspline.thesis_polyhedron_names()[:3]
+    ['tetrahedron', 'sato', 'octahedron']
+    """
+    return list(_core.thesis_polyhedron_names())
