@@ -864,10 +864,13 @@ private:
       m_flip[o] = b0 + d / w;
       return;
     }
-    case Flip_rule::LARGER_FACE:
-      prescribe_A = m_face_area[A] > m_face_area[B] ||
-                    (m_face_area[A] == m_face_area[B] && std::size_t(A) < std::size_t(B));
+    case Flip_rule::LARGER_FACE: {
+      // compared in FT (exact for an exact kernel): on symmetric meshes the areas tie, and a
+      // tie decided by round-off would depend on the labelling
+      const FT a = m_face_normal[A].squared_length(), b = m_face_normal[B].squared_length();
+      prescribe_A = a > b || (a == b && std::size_t(A) < std::size_t(B));
       break;
+    }
     default:
       prescribe_A = std::size_t(A) < std::size_t(B);
       break;
