@@ -55,8 +55,11 @@ template <class Surface>
 class Patch_sampler {
 public:
   /// the sampler of `surface` (kept by reference)
+  /// \param surface the surface
   explicit Patch_sampler(const Surface& surface) : m_surface(surface) {}
-  /// returns the sample of face `f` at barycentric weights `w`
+  /// \param f a face
+  /// \param w barycentric weights of the face's corners
+  /// \returns the sample of face `f` at `w`
   template <class Face>
   Surface_sample operator()(Face f, const std::array<double, 3>& w) const {
     // two cached patches: the measures alternate between the two faces of an edge

@@ -56,17 +56,19 @@ public:
                bool exact)
       : m_mesh(std::move(mesh)), m_degree(degree), m_nets(std::move(nets)), m_exact(exact) {}
 
-  /// the mesh
+  /// \returns the mesh
   const Mesh& mesh() const { return m_mesh; }
-  /// the degree
+  /// \returns the degree
   int degree() const { return m_degree; }
-  /// the file said `number_type exact`
+  /// \returns `true` iff the file said `number_type exact`
   bool exact_numbers() const { return m_exact; }
-  /// the net of `f`
+  /// \param f a face
+  /// \returns the net of `f`
   const std::vector<typename Kernel::Vector_3>& control_net(Face_index f) const {
     return m_nets[f];
   }
-  /// the patch of `f` over the unit triangle
+  /// \param f a face
+  /// \returns the patch of `f` over the unit triangle
   Patch patch(Face_index f) const {
     return Patch(m_degree, typename Kernel::Point_2(0, 0), typename Kernel::Point_2(1, 0),
                  typename Kernel::Point_2(0, 1), m_nets[f]);

@@ -92,10 +92,10 @@ struct Pseudo_AG1_options {
   Edge_map edge_map = Edge_map::PARALLELOGRAM;            ///< middle-diamond relation
   Flip_rule flips = Flip_rule::SYMMETRIC;                 ///< flip rule
 
-  /// the method of §6.2 as written (the defaults)
+  /// \returns the method of §6.2 as written (the defaults)
   static Pseudo_AG1_options thesis() { return Pseudo_AG1_options(); }
-  /// the preliminary implementation of §5.4: planes through the centroids, projected stars,
-  /// no offsets; every control point a convex combination of the input vertices
+  /// \returns the preliminary implementation of §5.4: planes through the centroids, projected
+  /// stars, no offsets; every control point a convex combination of the input vertices
   static Pseudo_AG1_options chapter5() {
     Pseudo_AG1_options o;
     o.plane_position = 1;
@@ -104,20 +104,21 @@ struct Pseudo_AG1_options {
     o.offsets = {{0, 0, 0}};
     return o;
   }
-  /// the thesis' method with the averaged diamond map, which §6.2.2 suggests when both end
-  /// diamonds are convex: on smooth meshes it divides the mean normal jump by 2 to 6
+  /// \returns the thesis' method with the averaged diamond map, which §6.2.2 suggests when both
+  /// end diamonds are convex: on smooth meshes it divides the mean normal jump by 2 to 8
   static Pseudo_AG1_options smooth() {
     Pseudo_AG1_options o;
     o.edge_map = Edge_map::AVERAGED_DIAMOND;
     return o;
   }
-  /// every step rational: with an exact number type the surface is exact and certifiable
+  /// \returns every step rational: with an exact number type the surface is exact and
+  /// certifiable
   static Pseudo_AG1_options exact() {
     Pseudo_AG1_options o = chapter5();
     o.plane_position = 0.5;
     return o;
   }
-  /// returns `true` iff every step of these options is a rational function of the input
+  /// \returns `true` iff every step of these options is a rational function of the input
   bool is_rational() const {
     return normal != Corner_plane_normal::AVERAGE &&
            (undulation_gain == 0 || undulation_threshold == 0) &&
@@ -272,31 +273,37 @@ public:
   /// \name Access
   /// @{
 
-  /// the (oriented) input mesh
+  /// \returns the (oriented) input mesh
   const Mesh& mesh() const { return m_mesh; }
-  /// the options
+  /// \returns the options
   const Pseudo_AG1_options& options() const { return m_options; }
-  /// what validation found (components, genus, reoriented components)
+  /// \returns what validation found (components, genus, reoriented components)
   const Closed_mesh_summary& mesh_summary() const { return m_summary; }
-  /// the polynomial degree, 5
+  /// \returns the polynomial degree, 5
   int degree() const { return 5; }
-  /// `true` iff every control point is the exact value of the construction (exact number
-  /// type and rational options)
+  /// \returns `true` iff every control point is the exact value of the construction (exact
+  /// number type and rational options)
   bool is_exact() const { return m_exact; }
-  /// the corner plane of `v`
+  /// \param v a vertex
+  /// \returns the corner plane of `v`
   const Corner_plane<Kernel>& corner_plane(Vertex_index v) const { return m_planes[v]; }
-  /// the relations of `e`
+  /// \param e an edge
+  /// \returns the relations of `e`
   const Pseudo_AG1_edge<FT>& edge_relation(Edge_index e) const { return m_edges[e]; }
-  /// the final star scale of every vertex (changes only with automatic shrinking)
+  /// \returns the number of rounds of automatic star shrinking (0 without it)
   std::size_t shrinking_rounds() const { return m_shrinking_rounds; }
 
-  /// the star point \f$S_{v\to w}\f$ of the halfedge \f$v \to w\f$
+  /// \param h the halfedge \f$v \to w\f$
+  /// \returns the star point \f$S_{v\to w}\f$
   const Vector_3& star(Halfedge_index h) const { return m_star[h]; }
-  /// the edge-middle point \f$M_{v\to w}\f$ of the halfedge \f$v \to w\f$
+  /// \param h the halfedge \f$v \to w\f$
+  /// \returns the edge-middle point \f$M_{v\to w}\f$
   const Vector_3& edge_middle(Halfedge_index h) const { return m_middle[h]; }
-  /// the corner-inner point of `face(h)` at `source(h)`
+  /// \param h a halfedge
+  /// \returns the corner-inner point of `face(h)` at `source(h)`
   const Vector_3& corner_inner(Halfedge_index h) const { return m_inner[h]; }
-  /// the flip point of `face(h)` next to `edge(h)`
+  /// \param h a halfedge
+  /// \returns the flip point of `face(h)` next to `edge(h)`
   const Vector_3& flip(Halfedge_index h) const { return m_flip[h]; }
 
   /*!

@@ -65,8 +65,8 @@ struct Pseudo_AG1_certificate {
   double max_coplanarity = 0;   ///< largest \f$|\langle S - z_v, \hat N_v\rangle|\f$
   std::vector<Pseudo_AG1_edge_certificate> per_edge; ///< by edge index
 
-  /// `true` iff every edge is \f$C^0\f$ with its middle diamonds on one relation and every
-  /// vertex is \f$G^1\f$: the surface is pseudo-AG\f$^1\f$ (AG1.md R-3)
+  /// \returns `true` iff every edge is \f$C^0\f$ with its middle diamonds on one relation and
+  /// every vertex is \f$G^1\f$: the surface is pseudo-AG\f$^1\f$ (AG1.md R-3)
   bool pseudo_AG1() const {
     return c0_edges == edges && middle_edges == edges && g1_vertices == vertices &&
            coplanar_vertices == vertices;
@@ -251,6 +251,7 @@ public:
   using Edge_index = typename Mesh::Edge_index;
 
   /// the view of `surface` (kept by reference)
+  /// \param surface the surface
   /// \throws Invalid_input if the patches are not quintic
   explicit Pseudo_AG1_view(const Surface& surface) : m_surface(surface) {
     using FT = typename Geom_traits::FT;
@@ -332,21 +333,26 @@ public:
     }
   }
 
-  /// the mesh
+  /// \returns the mesh
   const Mesh& mesh() const { return m_surface.mesh(); }
-  /// the net of `f`
+  /// \param f a face
+  /// \returns the net of `f`
   decltype(auto) control_net(Face_index f) const { return m_surface.control_net(f); }
-  /// the relation solved from the middle diamonds of `e`
+  /// \param e an edge
+  /// \returns the relation solved from the middle diamonds of `e`
   const Pseudo_AG1_edge<typename Geom_traits::FT>& edge_relation(Edge_index e) const {
     return m_edges[e];
   }
-  /// `false` if every middle diamond of `e` is degenerate (no relation determined)
+  /// \param e an edge
+  /// \returns `false` if every middle diamond of `e` is degenerate (no relation determined)
   bool relation_determined(Edge_index e) const { return m_relation_found[e]; }
-  /// the corner point and a normal of the corner triangle at `v`
+  /// \param v a vertex
+  /// \returns the corner point and a normal of the corner triangle at `v`
   const Corner_plane<Geom_traits>& corner_plane(Vertex_index v) const { return m_planes[v]; }
-  /// the star point of `h`
+  /// \param h a halfedge
+  /// \returns the star point of `h`
   const typename Geom_traits::Vector_3& star(Halfedge_index h) const { return m_star[h]; }
-  /// the verdicts are exact iff the number type is
+  /// \returns `true` iff the number type is exact (the verdicts are then exact)
   bool is_exact() const {
     return CGAL::Algebraic_structure_traits<typename Geom_traits::FT>::Is_exact::value;
   }
