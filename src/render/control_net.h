@@ -40,23 +40,18 @@ inline Point_role point_role(const CGAL::Triangular_spline::Multi_index& index) 
   }
 }
 
-// The control nets of the patches of a TriangularSplineNetwork: every patch's points and the
-// edges of its triangular grid, b_{i+1,j,k}-b_{i,j+1,k}-b_{i,j,k+1} for i+j+k = m-1. A
-// functional patch's point b_{ijk} sits at ((i r + j s + k t)/m, value) over its domain
-// triangle (r, s, t); a parametric patch's point is its value. Points and segments shared by
-// neighbouring patches appear once. `status(f, index)` says whether b_index of patch f was
-// prescribed or propagated.
-template <class Network, class Status = Unknown_status>
-Net control_net(const Network& network, Status status = Status()) {
-  namespace TS = CGAL::Triangular_spline;
-  Net net;
-  std::map<Vector, std::size_t> seen_points;
-  std::map<std::pair<Vector, Vector>, bool> seen_segments;
-  const std::size_t faces = network.domain().number_of_faces();
-  for (std::size_t f = 0; f < faces; ++f) {
-    // binds to a stored patch, or extends the life of a computed one
-    const auto& bezier = network.patch(static_cast<typename Network::Index>(f));
-    using Value = typename std::decay_t<decltype(bezier)>::Value_type;
+namespace internal {
+
+// Adds the points and grid segments of one patch; points and segments already seen (shared
+// with a neighbouring patch) are skipped. `status(index)` is the point's status.
+class Net_builder {
+public:
+  explicit Net_builder(Net& net) : m_net(net) {}
+
+  template <class Bezier, class Status>
+  void add_patch(const Bezier& bezier, Status status) {
+    namespace TS = CGAL::Triangular_spline;
+    using Value = typename Bezier::Value_type;
     const int m = bezier.degree();
     auto position = [&](const TS::Multi_index& index) -> Vector {
       const Value& value = bezier.control_point(index);
@@ -74,18 +69,18 @@ Net control_net(const Network& network, Status status = Status()) {
     };
     for (const TS::Multi_index& index : TS::multi_indices(m)) {
       const Vector p = position(index);
-      if (seen_points.emplace(p, net.points.size()).second)
-        net.points.push_back({p, point_role(index), status(f, index)});
+      if (m_seen_points.emplace(p, m_net.points.size()).second)
+        m_net.points.push_back({p, point_role(index), status(index)});
     }
     auto add_segment = [&](const TS::Multi_index& a, const TS::Multi_index& b) {
       Vector p = position(a), q = position(b);
       if (q < p)
         std::swap(p, q);
-      if (seen_segments.emplace(std::make_pair(p, q), true).second)
-        net.segments.push_back({{p, q}});
+      if (m_seen_segments.emplace(std::make_pair(p, q), true).second)
+        m_net.segments.push_back({{p, q}});
     };
     if (m == 0)
-      continue;
+      return;
     for (const TS::Multi_index& t : TS::multi_indices(m - 1)) {
       const TS::Multi_index a{t.i + 1, t.j, t.k}, b{t.i, t.j + 1, t.k}, c{t.i, t.j, t.k + 1};
       add_segment(a, b);
@@ -93,8 +88,67 @@ Net control_net(const Network& network, Status status = Status()) {
       add_segment(c, a);
     }
   }
+
+private:
+  Net& m_net;
+  std::map<Vector, std::size_t> m_seen_points;
+  std::map<std::pair<Vector, Vector>, bool> m_seen_segments;
+};
+
+} // namespace internal
+
+// The control nets of the patches of a TriangularSplineNetwork: every patch's points and the
+// edges of its triangular grid, b_{i+1,j,k}-b_{i,j+1,k}-b_{i,j,k+1} for i+j+k = m-1. A
+// functional patch's point b_{ijk} sits at ((i r + j s + k t)/m, value) over its domain
+// triangle (r, s, t); a parametric patch's point is its value. Points and segments shared by
+// neighbouring patches appear once. `status(f, index)` says whether b_index of patch f was
+// prescribed or propagated.
+template <class Network, class Status = Unknown_status>
+Net control_net(const Network& network, Status status = Status()) {
+  Net net;
+  internal::Net_builder builder(net);
+  const std::size_t faces = network.domain().number_of_faces();
+  for (std::size_t f = 0; f < faces; ++f) {
+    // binds to a stored patch, or extends the life of a computed one
+    const auto& bezier = network.patch(static_cast<typename Network::Index>(f));
+    builder.add_patch(bezier, [&](const CGAL::Triangular_spline::Multi_index& index) {
+      return status(f, index);
+    });
+  }
   return net;
 }
+
+// The control net of a surface over a closed mesh (a class with mesh() and patch(f), such as
+// CGAL::Triangular_spline::Surface_file or Pseudo_AG1_surface), patches in face order.
+template <class Surface, class Status = Unknown_status>
+Net closed_surface_control_net(const Surface& surface, Status status = Status()) {
+  Net net;
+  internal::Net_builder builder(net);
+  for (auto f : surface.mesh().faces())
+    builder.add_patch(surface.patch(f), [&](const CGAL::Triangular_spline::Multi_index& index) {
+      return status(f, index);
+    });
+  return net;
+}
+
+// The roles of Xu's pseudo-AG^1 construction (Fig. 6.9, §6.2): the stars and the inner points
+// (corner-inner and flips) are prescribed, the edge-middle points propagated through the edge's
+// affine relation; corners come from the corner planes and keep their role colour.
+struct Pseudo_AG1_status {
+  template <class Face>
+  Point_status operator()(Face, const CGAL::Triangular_spline::Multi_index& index) const {
+    switch (point_role(index)) {
+    case Point_role::Star:
+    case Point_role::Inner:
+      return Point_status::Prescribed;
+    case Point_role::Edge_middle:
+      return Point_status::Propagated;
+    case Point_role::Corner:
+      break;
+    }
+    return Point_status::Unknown;
+  }
+};
 
 } // namespace tspline::render
 

@@ -49,16 +49,18 @@ std::string mode_name(Mode mode) {
     return "isophotes";
   case Mode::Net:
     return "net";
+  case Mode::Jump:
+    return "jump";
   }
   return "shaded";
 }
 
 Mode parse_mode(const std::string& name) {
-  for (Mode m : {Mode::Shaded, Mode::Curvature, Mode::Isophotes, Mode::Net})
+  for (Mode m : {Mode::Shaded, Mode::Curvature, Mode::Isophotes, Mode::Net, Mode::Jump})
     if (mode_name(m) == name)
       return m;
   throw std::invalid_argument("unknown render mode '" + name +
-                              "' (expected shaded, curvature, isophotes or net)");
+                              "' (expected shaded, curvature, isophotes, net or jump)");
 }
 
 Rgb curvature_colour(double K, double range) {
@@ -232,19 +234,33 @@ Legend_items net_legend_items(const Net* net) {
   return items;
 }
 
+// The colour bar's title and labels: +-range around 0 for curvature, 0 to range for jumps.
+struct Bar_labels {
+  std::string title, top, middle, bottom;
+};
+
+Bar_labels bar_labels(Mode mode, double range) {
+  if (mode == Mode::Jump)
+    return {"DEG", format_number(range), format_number(range / 2), "0"};
+  return {"K", "+" + format_number(range), "0", "-" + format_number(range)};
+}
+
 Layout layout_for(const Options& o, const Net* net, double range) {
   Layout layout;
   layout.font_scale = font_scale_for(o.width, o.height);
   if (!o.legend)
     return layout;
   const int s = layout.font_scale;
-  if (o.mode == Mode::Curvature) {
-    const int labels = std::max(internal::text_width("+" + format_number(range), s),
-                                internal::text_width("-" + format_number(range), s));
+  if (o.mode == Mode::Curvature || o.mode == Mode::Jump) {
+    const Bar_labels b = bar_labels(o.mode, range);
+    const int labels = std::max({internal::text_width(b.top, s), internal::text_width(b.middle, s),
+                                 internal::text_width(b.bottom, s)});
     layout.right = 5 * s + 4 + 4 * s + labels + 2 * s;
   } else if (o.mode == Mode::Net) {
     const Legend_items items = net_legend_items(net);
-    const int rows = (items.roles ? 1 : 0) + (items.status ? 1 : 0);
+    // Xu's colours fit one row: corner, star, prescribed, propagated.
+    const int rows =
+        items.roles && net->status_fills ? 1 : (items.roles ? 1 : 0) + (items.status ? 1 : 0);
     layout.bottom = rows * (internal::text_height(s) + 5 * s);
   }
   // Never let a legend take more than a third of the picture.
@@ -268,6 +284,8 @@ void check_options(const Options& o) {
     throw std::invalid_argument("view angles must be finite");
   if (o.curvature_range && !(std::isfinite(*o.curvature_range) && *o.curvature_range > 0))
     throw std::invalid_argument("the curvature range must be a positive finite number");
+  if (o.jump_range && !(std::isfinite(*o.jump_range) && *o.jump_range > 0))
+    throw std::invalid_argument("the jump range must be a positive finite number");
   if (o.light && normalized(*o.light) == Vector{0, 0, 0})
     throw std::invalid_argument("the light direction must be a non-zero finite vector");
 }
@@ -536,7 +554,8 @@ void shade(const Mesh& mesh, const std::vector<Projected>& projected, const Came
 
       Colour colour{1, 1, 1};
       switch (o.mode) {
-      case Mode::Shaded: {
+      case Mode::Shaded:
+      case Mode::Jump: {
         const Vector half = normalized(lighting.light + view);
         const double specular = power_40(std::max(0.0, dot(n, half)));
         const double s = 0.20 + 0.70 * diffuse + 0.14 * fill;
@@ -608,7 +627,9 @@ public:
   Net_painter(const Camera& camera, Frame& frame, double tolerance, int supersampling)
       : m_camera(camera), m_frame(frame), m_tolerance(tolerance), m_ss(supersampling) {}
 
-  void segment(const Vector& p, const Vector& q, Rgb colour, double half_width) {
+  // Hidden parts of the segment are blended with `hidden_alpha`.
+  void segment(const Vector& p, const Vector& q, Rgb colour, double half_width,
+               double hidden_alpha = 0.22) {
     const Projected a = m_camera.project(p), b = m_camera.project(q);
     if (!std::isfinite(a.x + a.y + b.x + b.y))
       return;
@@ -626,13 +647,16 @@ public:
           continue;
         const std::size_t i = index(x, y);
         const double depth = a.q + s * (b.q - a.q); // q is linear along the projected segment
-        m_frame.blend(i, colour, depth >= m_frame.depth[i] - m_tolerance ? 1.0 : 0.22);
+        const double alpha = depth >= m_frame.depth[i] - m_tolerance ? 1.0 : hidden_alpha;
+        if (alpha > 0)
+          m_frame.blend(i, colour, alpha);
       }
   }
 
   // A marker: a square for corners, a disc otherwise; with a known status, an outer ring in
-  // the status colour around the role colour; a dark rim.
-  void marker(const Net::Point& point, double radius, bool visible_pass) {
+  // the status colour around the role colour (or, with `fills`, the status colour filling
+  // every marker but corners and stars); a dark rim.
+  void marker(const Net::Point& point, double radius, bool visible_pass, bool fills) {
     const Projected c = m_camera.project(point.position);
     if (!std::isfinite(c.x + c.y))
       return;
@@ -644,7 +668,11 @@ public:
     if (!box(c.x - radius, c.x + radius, c.y - radius, c.y + radius, x0, x1, y0, y1))
       return;
     const bool square = point.role == Point_role::Corner;
-    const bool ringed = point.status != Point_status::Unknown;
+    const bool known = point.status != Point_status::Unknown;
+    const bool filled =
+        fills && known && point.role != Point_role::Corner && point.role != Point_role::Star;
+    const bool ringed = known && !fills;
+    const Rgb fill = filled ? status_colour(point.status) : role_colour(point.role);
     const double rim = std::max(0.6 * m_ss, 0.14 * radius);
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x) {
@@ -654,7 +682,7 @@ public:
         const double d = square ? std::max(dx, dy) / 0.88 : std::sqrt(dx * dx + dy * dy);
         if (d > radius)
           continue;
-        Rgb colour = role_colour(point.role);
+        Rgb colour = fill;
         if (d > radius - rim)
           colour = {40, 40, 40};
         else if (ringed && d > 0.6 * radius)
@@ -721,7 +749,44 @@ void draw_net(const Net& net, const Camera& camera, const Options& o, double tol
   const double radius = marker_radius(net, camera, o);
   for (bool visible : {false, true}) // hidden ones first: visible markers stay on top
     for (const Net::Point& p : net.points)
-      painter.marker(p, radius, visible);
+      painter.marker(p, radius, visible, net.status_fills);
+}
+
+// Each curve's projected length, for the line width of Mode::Jump.
+double median_curve_length(const Net& net, const Camera& camera, int ss) {
+  std::vector<double> lengths;
+  for (const Net::Curve& c : net.curves) {
+    double length = 0;
+    for (std::size_t k = 1; k < c.points.size(); ++k) {
+      const Projected a = camera.project(c.points[k - 1]), b = camera.project(c.points[k]);
+      length += std::hypot(b.x - a.x, b.y - a.y) / ss;
+    }
+    if (std::isfinite(length) && length > 0)
+      lengths.push_back(length);
+  }
+  if (lengths.empty())
+    return 0;
+  std::nth_element(lengths.begin(), lengths.begin() + std::ptrdiff_t(lengths.size() / 2),
+                   lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+// The curves of Mode::Jump, coloured by value on the 0..range half of the curvature scale
+// (green 0, yellow, red at the range). Hidden parts are not drawn: on a closed surface they
+// would only clutter the visible ones. The width follows the curves' projected length, so a
+// dense mesh still shows its surface between the lines.
+void draw_curves(const Net& net, const Camera& camera, const Options& o, double tolerance,
+                 double range, Frame& frame) {
+  Net_painter painter(camera, frame, tolerance, o.supersampling);
+  const double largest = std::max(1.5, std::min(o.width, o.height) / 300.0);
+  const double half_width =
+      o.supersampling *
+      std::clamp(0.05 * median_curve_length(net, camera, o.supersampling), 0.5, largest);
+  for (const Net::Curve& c : net.curves) {
+    const Rgb colour = curvature_colour(std::max(0.0, c.value), range);
+    for (std::size_t k = 1; k < c.points.size(); ++k)
+      painter.segment(c.points[k - 1], c.points[k], colour, half_width, 0.0);
+  }
 }
 
 Image downsample(const Frame& frame, int ss, std::size_t& covered) {
@@ -756,8 +821,9 @@ void fill_rect(Image& image, int x0, int y0, int x1, int y1, Rgb c) {
       image.set(x, y, c);
 }
 
-// A vertical colour bar on the right: +range at the top, 0 in the middle, -range at the bottom.
-void draw_colour_bar(Image& image, const Layout& layout, double range) {
+// A vertical colour bar on the right: +range at the top, 0 in the middle, -range at the bottom
+// (curvature), or range at the top and 0 at the bottom (jump).
+void draw_colour_bar(Image& image, const Layout& layout, Mode mode, double range) {
   const int s = layout.font_scale;
   const Rgb ink{30, 30, 30};
   const int bar_w = 5 * s + 4;
@@ -766,15 +832,16 @@ void draw_colour_bar(Image& image, const Layout& layout, double range) {
   const int y0 = (image.height - bar_h) / 2, y1 = y0 + bar_h;
   fill_rect(image, x0 - 1, y0 - 1, x1 + 1, y1 + 1, ink);
   for (int y = y0; y < y1; ++y) {
-    const double t = 1 - 2 * (y - y0 + 0.5) / bar_h;
+    const double u = (y - y0 + 0.5) / bar_h; // 0 at the top, 1 at the bottom
+    const double t = mode == Mode::Jump ? 1 - u : 1 - 2 * u;
     fill_rect(image, x0, y, x1, y + 1, curvature_colour(t * range, range));
   }
   const int text_x = x1 + 4 * s, half = internal::text_height(s) / 2;
-  const std::string top = "+" + format_number(range), bottom = "-" + format_number(range);
-  internal::draw_text(image, text_x, y0 - half, top, s, ink);
-  internal::draw_text(image, text_x, (y0 + y1) / 2 - half, "0", s, ink);
-  internal::draw_text(image, text_x, y1 - half, bottom, s, ink);
-  internal::draw_text(image, x0, y0 - 3 * half - 4 * s, "K", s, ink);
+  const Bar_labels labels = bar_labels(mode, range);
+  internal::draw_text(image, text_x, y0 - half, labels.top, s, ink);
+  internal::draw_text(image, text_x, (y0 + y1) / 2 - half, labels.middle, s, ink);
+  internal::draw_text(image, text_x, y1 - half, labels.bottom, s, ink);
+  internal::draw_text(image, x0, y0 - 3 * half - 4 * s, labels.title, s, ink);
   for (int y : {y0, (y0 + y1) / 2, y1 - 1}) // ticks
     fill_rect(image, x1, y, x1 + s + 1, y + 1, ink);
 }
@@ -801,6 +868,14 @@ void draw_net_key(Image& image, const Layout& layout, const Net* net) {
     internal::draw_text(image, x, y, label, s, ink);
     x += internal::text_width(label, s) + 5 * s;
   };
+  if (items.roles && net->status_fills) {
+    int x = margin;
+    item(x, "CORNER", role_colour(Point_role::Corner), true);
+    item(x, "STAR", role_colour(Point_role::Star), false);
+    item(x, "PRESCRIBED", status_colour(Point_status::Prescribed), false);
+    item(x, "PROPAGATED", status_colour(Point_status::Propagated), false);
+    return;
+  }
   if (items.roles) {
     int x = margin;
     item(x, "CORNER", role_colour(Point_role::Corner), true);
@@ -822,7 +897,7 @@ Image render(const Mesh& mesh, const Net* net, const Options& options, Report* r
   const auto start = std::chrono::steady_clock::now();
   check_options(options);
   check_mesh(mesh, options.mode);
-  const Net* overlay = options.mode == Mode::Net ? net : nullptr;
+  const Net* overlay = options.mode == Mode::Net || options.mode == Mode::Jump ? net : nullptr;
 
   Report r;
   r.triangles = mesh.triangles.size();
@@ -853,7 +928,20 @@ Image render(const Mesh& mesh, const Net* net, const Options& options, Report* r
                             : robust_curvature_range(mesh.gaussian_curvature, floor);
   }
 
-  const Layout layout = layout_for(options, overlay, r.curvature_range);
+  if (options.mode == Mode::Jump) {
+    first = true;
+    if (overlay != nullptr)
+      for (const Net::Curve& c : overlay->curves)
+        if (std::isfinite(c.value)) {
+          r.jump_max = first ? c.value : std::max(r.jump_max, c.value);
+          first = false;
+        }
+    // At least one degree, so that round-off on a G^1 surface stays green.
+    r.jump_range = options.jump_range ? *options.jump_range : std::max(1.0, r.jump_max);
+  }
+
+  const Layout layout =
+      layout_for(options, overlay, options.mode == Mode::Jump ? r.jump_range : r.curvature_range);
   const int ss = options.supersampling;
   // Very large pictures fall back to fewer samples per pixel rather than exhausting memory.
   int samples_per_axis = ss;
@@ -892,13 +980,18 @@ Image render(const Mesh& mesh, const Net* net, const Options& options, Report* r
     draw_outline(frame, std::max(1, samples_per_axis / 2));
   if (overlay != nullptr) {
     const double tolerance = q_hi > q_lo ? 0.01 * (q_hi - q_lo) : 0;
-    draw_net(*overlay, camera, o, tolerance, frame);
+    if (o.mode == Mode::Jump)
+      draw_curves(*overlay, camera, o, tolerance, r.jump_range, frame);
+    else
+      draw_net(*overlay, camera, o, tolerance, frame);
   }
 
   Image image = downsample(frame, samples_per_axis, r.covered_pixels);
   if (options.legend && options.mode == Mode::Curvature && r.has_curvature)
-    draw_colour_bar(image, layout, r.curvature_range);
-  if (options.legend && overlay != nullptr)
+    draw_colour_bar(image, layout, Mode::Curvature, r.curvature_range);
+  if (options.legend && options.mode == Mode::Jump)
+    draw_colour_bar(image, layout, Mode::Jump, r.jump_range);
+  if (options.legend && options.mode == Mode::Net && overlay != nullptr)
     draw_net_key(image, layout, overlay);
 
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

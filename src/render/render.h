@@ -55,20 +55,32 @@ struct Mesh {
 enum class Point_role { Corner, Star, Edge_middle, Inner };
 enum class Point_status { Unknown, Prescribed, Propagated };
 
-// A control net (or any set of points and segments) drawn over the surface in `Mode::Net`.
+// A control net (or any set of points and segments) drawn over the surface in `Mode::Net`,
+// and the curves drawn in `Mode::Jump`.
 struct Net {
   struct Point {
     Vector position;
     Point_role role = Point_role::Inner;
     Point_status status = Point_status::Unknown;
   };
+  // A polyline on the surface with a value for its colour (Mode::Jump: an input edge and its
+  // largest normal jump in degrees).
+  struct Curve {
+    std::vector<Vector> points;
+    double value = 0;
+  };
   std::vector<Point> points;
   std::vector<std::array<Vector, 2>> segments;
+  std::vector<Curve> curves;
+  // Xu's Fig. 6.9 colours: corners and stars keep their role colours, and a known status fills
+  // the other markers (prescribed green, propagated yellow) instead of ringing them.
+  bool status_fills = false;
 };
 
-enum class Mode { Shaded, Curvature, Isophotes, Net };
+// Jump: shaded, with Net::curves coloured by value and a colour bar from 0 to the range.
+enum class Mode { Shaded, Curvature, Isophotes, Net, Jump };
 
-// "shaded", "curvature", "isophotes", "net"; parse_mode throws std::invalid_argument.
+// "shaded", "curvature", "isophotes", "net", "jump"; parse_mode throws std::invalid_argument.
 std::string mode_name(Mode mode);
 Mode parse_mode(const std::string& name);
 
@@ -87,8 +99,10 @@ struct Options {
   int bands = 12; // isophotes: |n.e| in [0, 1] is cut into this many black/white bands
   // Curvature colours saturate at |K| = range; by default the 98th percentile of |K|.
   std::optional<double> curvature_range;
+  // Jump colours saturate at this value; by default the largest curve value, at least 1.
+  std::optional<double> jump_range;
   int supersampling = 2; // samples per pixel along each axis, 1..4
-  bool legend = true;    // colour bar (curvature) or marker key (net)
+  bool legend = true;    // colour bar (curvature, jump) or marker key (net)
 };
 
 struct Report {
@@ -99,12 +113,14 @@ struct Report {
   double curvature_min = 0, curvature_max = 0; // over finite vertex values
   double curvature_range = 0;                  // the colour scale used (Mode::Curvature)
   bool curvature_range_from_user = false;
+  double jump_max = 0;   // the largest finite curve value (Mode::Jump)
+  double jump_range = 0; // the colour scale used (Mode::Jump)
   double seconds = 0;
 };
 
-// Renders `mesh` (and `net` in Mode::Net; it may be null) on a white background, auto-fitted
-// with a margin of 5% of min(width, height) pixels on every side (plus room for the legend).
-// Throws std::invalid_argument for bad options, out-of-range triangle indices, a
+// Renders `mesh` (and `net` in Mode::Net and Mode::Jump; it may be null) on a white background,
+// auto-fitted with a margin of 5% of min(width, height) pixels on every side (plus room for the
+// legend). Throws std::invalid_argument for bad options, out-of-range triangle indices, a
 // normal/curvature array of the wrong size, or Mode::Curvature without curvatures.
 // An empty mesh gives a white image.
 Image render(const Mesh& mesh, const Net* net, const Options& options, Report* report = nullptr);

@@ -67,29 +67,37 @@ int run_render(const std::vector<std::string>& args) {
   cl.describe(
       "Draws a surface into a PNG without a display. A .spline file (from 'tspline c1 --output' "
       "or 'tspline demo') is tessellated and its normals and Gaussian curvature come from the "
-      "exact derivatives of the patches; a mesh (.ply/.off/.obj/.stl) is drawn as it is, with "
-      "normals estimated when it has none.");
+      "exact derivatives of the patches; so is a closed surface (.surface, from 'tspline "
+      "pseudo-ag1 --save'); a mesh (.ply/.off/.obj/.stl) is drawn as it is, with normals "
+      "estimated when it has none.");
   cl.describe(
       "Modes: shaded (Blinn-Phong, two-sided); curvature (Gaussian curvature K, Fang's colours: "
       "green 0, yellow to red positive, cyan to blue negative, colour bar with the range); "
       "isophotes (black and white bands of |n.e|, e the direction to the eye or --light, "
       "Fang 2.3); net (the control net over a light surface: corners red squares, stars "
       "magenta, edge-middle blue, inner grey; when known, a green ring marks a prescribed "
-      "point and an amber ring a propagated one, as in 'tspline demo').");
-  cl.input(job.input, "FILE", "a .spline file or a triangle mesh (.ply/.off/.obj/.stl)");
+      "point and an amber ring a propagated one, as in 'tspline demo'; for a .surface Xu's "
+      "Fig. 6.9 colours: corners red, stars magenta, prescribed inner points green, propagated "
+      "edge-middle points yellow); jump (.surface only: shaded, every input edge drawn on "
+      "the surface in the colour of its largest normal jump, green 0 through yellow to red, "
+      "colour bar in degrees).");
+  cl.input(job.input, "FILE",
+           "a .spline or .surface file, or a triangle mesh (.ply/.off/.obj/.stl)");
   cl.output(job.output, "output", "FILE.png", "the picture to write", {{"png"}}, {"out"});
-  cl.text(mode, "mode", "MODE", "shaded, curvature, isophotes or net");
+  cl.text(mode, "mode", "MODE", "shaded, curvature, isophotes, net or jump");
   cl.text(view, "view", "AZ,EL",
           "azimuth and elevation in degrees (0,0: from -y with z up; 0,90: from above)");
   cl.text(size, "size", "WxH", "picture size in pixels");
   cl.integer(levels, "levels", "L",
-             "4-split levels of a .spline's tessellation, 0..8 (default: about 2.6e5 "
-             "triangles)",
+             "4-split levels of a .spline's or .surface's tessellation, 0..8 (default: about "
+             "2.6e5 triangles)",
              0, 8, "", false);
   cl.integer(job.options.bands, "bands", "N", "isophotes: number of bands of |n.e| in [0, 1]", 1,
              1000);
   cl.number(range, "range", "R",
-            "curvature: colours saturate at |K| = R (default: 98th percentile of |K|)", false);
+            "curvature: colours saturate at |K| = R (default: 98th percentile of |K|); jump: at "
+            "R degrees (default: the largest jump, at least 1)",
+            false);
   cl.text(light, "light", "X,Y,Z",
           "direction towards the light, world coordinates (default: above left of "
           "the eye); isophotes then use it as e");
@@ -123,7 +131,10 @@ int run_render(const std::vector<std::string>& args) {
   if (cl.given("range")) {
     if (!(range > 0))
       throw Usage_error("--range must be positive");
-    job.options.curvature_range = range;
+    if (job.options.mode == render::Mode::Jump)
+      job.options.jump_range = range;
+    else
+      job.options.curvature_range = range;
   }
   if (cl.given("light")) {
     const std::vector<double> l = number_list(light, 3, "light", "X,Y,Z");

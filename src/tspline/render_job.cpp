@@ -1,4 +1,5 @@
-// tspline render: spline or mesh -> Surface_mesh with normals and curvatures -> tspline_render
+// tspline render: spline, closed surface or mesh -> Surface_mesh with normals and curvatures ->
+// tspline_render
 // -> PNG, coloured PLY, JSON report. Also the pictures at the end of `tspline demo`.
 
 #include "render_job.h"
@@ -14,6 +15,8 @@
 #include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
+#include <CGAL/Triangular_spline/IO/surface_file.h>
+#include <CGAL/Triangular_spline/closed_surface.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 
 #include <chrono>
@@ -77,6 +80,9 @@ struct Scene {
   std::size_t patches = 0;
   int degree = 0;
   double tessellation_seconds = 0;
+  // Mode::Jump on a .surface: the per-edge largest normal jumps (degrees) of the curves
+  double jump_max = 0, jump_mean_edge_max = 0;
+  std::size_t jump_samples = 0;
 };
 
 template <class Value>
@@ -111,6 +117,76 @@ Scene load_spline(const Render_job& job, Progress& progress) {
     tessellate_spline_file<K::Vector_3>(in, job.input, job, progress, scene);
   else
     tessellate_spline_file<K::FT>(in, job.input, job, progress, scene);
+  return scene;
+}
+
+// The interior samples per edge of the jump measure: as in 'tspline pseudo-ag1' (--samples),
+// so that the colours match its report.
+constexpr int jump_samples_per_edge = 15;
+
+// A .surface (e.g. from 'tspline pseudo-ag1 --save'): the watertight closed tessellation with
+// the patches' normals and Gaussian curvatures; the Fig. 6.9 net or the jump curves on demand.
+Scene load_surface(const Render_job& job, Progress& progress) {
+  std::ifstream in(job.input);
+  if (!in)
+    throw std::runtime_error("cannot open '" + job.input + "'");
+  const TS::Surface_file<K> file = TS::read_surface_file<K>(in, job.input);
+  const auto& input = file.mesh();
+  Scene scene;
+  scene.patches = input.number_of_faces();
+  scene.degree = file.degree();
+  scene.levels = job.levels ? *job.levels : automatic_levels(scene.patches);
+  scene.kind = "closed surface (degree " + std::to_string(scene.degree) + ", " +
+               std::to_string(scene.patches) + " patches)";
+  const TS::Patch_sampler<TS::Surface_file<K>> sampler(file);
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t triangles = scene.patches << (2 * scene.levels);
+  progress.begin("tessellating " + std::to_string(triangles) + " triangles", triangles);
+  TS::Closed_tessellation t = TS::tessellate_closed_surface(input, sampler, scene.levels);
+  progress.end();
+  scene.tessellation_seconds = seconds_since(start);
+  scene.mesh = std::move(t.mesh);
+  // The properties that to_render_mesh() and --ply read, as for a .spline.
+  auto normal =
+      scene.mesh.add_property_map<Surface_mesh::Vertex_index, K::Vector_3>("v:normal").first;
+  auto gaussian =
+      scene.mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:gaussian_curvature").first;
+  for (auto v : scene.mesh.vertices()) {
+    const auto& n = t.normals[std::size_t(v)];
+    normal[v] = K::Vector_3(n[0], n[1], n[2]); // zero where singular: the renderer falls back
+    gaussian[v] = t.gaussian[std::size_t(v)];  // NaN where singular: drawn grey
+  }
+
+  if (job.options.mode == render::Mode::Net) {
+    // Xu's roles apply to the quintic nets of pseudo-AG^1; other degrees get role colours.
+    scene.net = scene.degree == 5
+                    ? render::closed_surface_control_net(file, render::Pseudo_AG1_status())
+                    : render::closed_surface_control_net(file);
+    scene.net.status_fills = true;
+  }
+  if (job.options.mode == render::Mode::Jump) {
+    // Only the edge jumps are needed: no self-intersection test, and the shape measures on
+    // the coarsest tessellation.
+    const TS::Closed_surface_measures m =
+        TS::measure_closed_surface(input, sampler, jump_samples_per_edge, 0, false);
+    scene.jump_max = m.max_jump_deg;
+    scene.jump_mean_edge_max = m.mean_edge_max_jump_deg;
+    scene.jump_samples = m.samples_per_edge;
+    // Each edge sampled from one patch at the tessellation's own points, so that the curve
+    // lies on the drawn surface and passes its depth test.
+    const int n = 1 << scene.levels;
+    for (auto e : input.edges()) {
+      const auto h = TS::canonical_halfedge(e, input);
+      render::Net::Curve curve;
+      curve.value = m.edge_max_jump_deg[std::size_t(e)];
+      for (int k = 0; k <= n; ++k) {
+        const TS::Surface_sample s =
+            sampler(input.face(h), TS::internal::weights_on_halfedge(input, h, double(k) / n));
+        curve.points.push_back({s.point[0], s.point[1], s.point[2]});
+      }
+      scene.net.curves.push_back(std::move(curve));
+    }
+  }
   return scene;
 }
 
@@ -168,11 +244,16 @@ Json run_render_job(const Render_job& job, std::ostream& out) {
   const std::string ext = lowercase_extension(job.input);
   Progress progress(!job.quiet);
   Scene scene;
+  if (mode == render::Mode::Jump && ext != "surface")
+    throw Usage_error("--mode jump needs a .surface input (the normal jumps across the edges "
+                      "of a closed surface, e.g. from 'tspline pseudo-ag1 --save')");
   if (ext == "spline") {
     scene = load_spline(job, progress);
+  } else if (ext == "surface") {
+    scene = load_surface(job, progress);
   } else if (ext == "ply" || ext == "off" || ext == "obj" || ext == "stl") {
     if (job.levels)
-      throw Usage_error("--levels applies to .spline inputs only");
+      throw Usage_error("--levels applies to .spline and .surface inputs only");
     scene = load_mesh(job);
     const bool has_curvature =
         scene.mesh.property_map<Surface_mesh::Vertex_index, double>("v:gaussian_curvature").second;
@@ -184,18 +265,20 @@ Json run_render_job(const Render_job& job, std::ostream& out) {
           "with per-vertex gaussian_curvature written by tspline");
     if (mode == render::Mode::Net)
       throw TS::Invalid_input("'" + job.input +
-                              "' is a mesh: net mode needs a .spline input (control points)");
+                              "' is a mesh: net mode needs a .spline or .surface input (control "
+                              "points)");
   } else {
     throw TS::Invalid_input("'" + job.input + "': unknown input format '." + ext +
-                            "' (expected .spline, or a mesh .ply/.off/.obj/.stl)");
+                            "' (expected .spline, .surface, or a mesh .ply/.off/.obj/.stl)");
   }
   if (scene.mesh.number_of_faces() == 0)
     throw TS::Invalid_input("'" + job.input + "' has no triangles to draw");
 
   progress.begin("rendering " + std::to_string(scene.mesh.number_of_faces()) + " triangles",
                  scene.mesh.number_of_faces());
-  const render::Report rendered = render_to_png(
-      scene.mesh, mode == render::Mode::Net ? &scene.net : nullptr, job.options, job.output);
+  const bool overlay = mode == render::Mode::Net || mode == render::Mode::Jump;
+  const render::Report rendered =
+      render_to_png(scene.mesh, overlay ? &scene.net : nullptr, job.options, job.output);
   progress.end();
 
   if (!job.ply.empty()) {
@@ -236,6 +319,16 @@ Json run_render_job(const Render_job& job, std::ostream& out) {
     report["net_points"] = scene.net.points.size();
     report["net_segments"] = scene.net.segments.size();
   }
+  if (mode == render::Mode::Jump) {
+    Json jump = Json::object();
+    jump["max"] = scene.jump_max;
+    jump["mean_edge_max"] = scene.jump_mean_edge_max;
+    jump["samples_per_edge"] = scene.jump_samples;
+    jump["edges"] = scene.net.curves.size();
+    jump["colour_range"] = rendered.jump_range;
+    jump["colour_range_from"] = job.options.jump_range ? "--range" : "largest jump (at least 1)";
+    report["normal_jump_deg"] = jump;
+  }
   if (rendered.has_curvature) {
     Json curvature = Json::object();
     curvature["min"] = rendered.curvature_min;
@@ -270,6 +363,12 @@ Json run_render_job(const Render_job& job, std::ostream& out) {
     }
     if (mode == render::Mode::Net) {
       out << "; " << scene.net.points.size() << " control points";
+    }
+    if (mode == render::Mode::Jump) {
+      std::snprintf(line, sizeof line,
+                    "; %zu edges, normal jumps up to %.3g deg, colours saturate at %.3g deg",
+                    scene.net.curves.size(), scene.jump_max, rendered.jump_range);
+      out << line;
     }
     std::snprintf(line, sizeof line, ") in %.2f s\n", total);
     out << line;

@@ -449,6 +449,70 @@ TEST(Render, NetModeDrawsPrescribedAndPropagatedColours) {
   EXPECT_FALSE(contains_colour(shaded, R::role_colour(R::Point_role::Star)));
 }
 
+TEST(Render, StatusFillsUseXusColours) {
+  // Fig. 6.9: corners and stars keep their role colours, the other points are filled with
+  // their status colour (no ring, so the role colour of an inner point does not appear).
+  R::Net net;
+  net.points.push_back({{0.2, 0.5, 0.1}, R::Point_role::Corner, R::Point_status::Unknown});
+  net.points.push_back({{0.4, 0.5, 0.1}, R::Point_role::Star, R::Point_status::Prescribed});
+  net.points.push_back({{0.6, 0.5, 0.1}, R::Point_role::Inner, R::Point_status::Prescribed});
+  net.points.push_back({{0.8, 0.5, 0.1}, R::Point_role::Edge_middle, R::Point_status::Propagated});
+  net.status_fills = true;
+  R::Options o = options(R::Mode::Net, 450, 450, 0, 90);
+  const R::Image image = R::render(flat_square(), &net, o);
+  keep(image, "net_status_fills");
+  EXPECT_TRUE(contains_colour(image, R::role_colour(R::Point_role::Corner)));
+  EXPECT_TRUE(contains_colour(image, R::role_colour(R::Point_role::Star)));
+  EXPECT_TRUE(contains_colour(image, R::status_colour(R::Point_status::Prescribed)));
+  EXPECT_TRUE(contains_colour(image, R::status_colour(R::Point_status::Propagated)));
+  EXPECT_FALSE(contains_colour(image, R::role_colour(R::Point_role::Inner)));
+  EXPECT_FALSE(contains_colour(image, R::role_colour(R::Point_role::Edge_middle)));
+}
+
+TEST(Render, JumpModeColoursCurvesByValue) {
+  // Two curves across the square, 0 and 2 degrees: green and (at the default range, the
+  // largest value but at least 1) red; a hidden curve is not drawn at all.
+  R::Net net;
+  net.curves.push_back({{{0.1, 0.3, 0}, {0.5, 0.3, 0}, {0.9, 0.3, 0}}, 0.0});
+  net.curves.push_back({{{0.1, 0.7, 0}, {0.9, 0.7, 0}}, 2.0});
+  R::Options o = options(R::Mode::Jump, 400, 400, 0, 90);
+  R::Report report;
+  const R::Image image = R::render(flat_square(), &net, o, &report);
+  keep(image, "jump_two_curves");
+  // 400x400, margin 20: the square spans pixels 20..380, y = 0.3 on row 20 + 0.7 * 360 = 272.
+  EXPECT_DOUBLE_EQ(report.jump_max, 2.0);
+  EXPECT_DOUBLE_EQ(report.jump_range, 2.0);
+  EXPECT_TRUE(contains_colour(image, R::curvature_colour(0, 1))); // green
+  EXPECT_TRUE(contains_colour(image, R::curvature_colour(1, 1))); // red
+  EXPECT_EQ(image.at(200, 272), R::curvature_colour(0, 1));       // x = 0.5, y = 0.3
+  EXPECT_EQ(image.at(200, 128), R::curvature_colour(1, 1));       // y = 0.7
+  o.jump_range = 4.0;                                             // 2 of 4 degrees: yellow
+  EXPECT_EQ(R::render(flat_square(), &net, o).at(200, 128), R::curvature_colour(2, 4));
+  // The surface is shaded as in Mode::Shaded away from the curves.
+  const R::Image shaded =
+      R::render(flat_square(), nullptr, options(R::Mode::Shaded, 400, 400, 0, 90));
+  EXPECT_EQ(image.at(200, 200), shaded.at(200, 200));
+  for (auto& curve : net.curves)
+    for (auto& p : curve.points)
+      p[2] = -0.1;
+  const R::Image hidden = R::render(flat_square(), &net, options(R::Mode::Jump, 400, 400, 0, 90));
+  EXPECT_EQ(hidden.pixels, shaded.pixels);
+  // The legend is a colour bar from 0 (green, bottom) to the range (red, top).
+  o.legend = true;
+  o.jump_range.reset();
+  const R::Image legend = R::render(flat_square(), &net, o);
+  keep(legend, "jump_legend");
+  bool red = false, green = false;
+  for (int y = 0; y < legend.height; ++y)
+    for (int x = legend.width * 3 / 4; x < legend.width; ++x) {
+      const R::Rgb c = legend.at(x, y);
+      red = red || (c.r > 240 && c.g < 20 && c.b < 20);
+      green = green || (c.g > 240 && c.r < 20 && c.b < 20);
+    }
+  EXPECT_TRUE(red);
+  EXPECT_TRUE(green);
+}
+
 // ---------------------------------------------------------------------------------------
 // Determinism, PNG, adapters, errors
 
@@ -553,4 +617,6 @@ TEST(Render, BadArgumentsAreRejected) {
   EXPECT_THROW(R::render(wrong, nullptr, R::Options()), std::invalid_argument);
   EXPECT_THROW(R::parse_mode("wireframe"), std::invalid_argument);
   EXPECT_EQ(R::parse_mode("isophotes"), R::Mode::Isophotes);
+  EXPECT_EQ(R::parse_mode("jump"), R::Mode::Jump);
+  bad([](R::Options& o) { o.jump_range = 0.0; });
 }
