@@ -42,7 +42,8 @@ int run_pseudo_ag1(const std::vector<std::string>& args) {
               "oriented outward. Or --shape: " +
               pseudo_ag1_shape_names() + ".");
   cl.describe("Presets: smooth (the default: thesis with the averaged diamond map that 6.2.2 "
-              "suggests; on smooth meshes 2 to 6 times smaller mean normal jumps), thesis (the "
+              "suggests, kept away from thin diamonds; 1.1 to 2.2 times smaller mean normal jumps "
+              "on real meshes), thesis (the "
               "method of 6.2 as written: area-weighted normals, planes half-way, "
               "raised or lowered by the mean dihedral angle, umbrella stars, offsets, "
               "parallelogram edge maps), "
@@ -70,6 +71,11 @@ int run_pseudo_ag1(const std::vector<std::string>& args) {
   cl.text(inner, "inner", "I", "corner-inner points: offset or cross-edge");
   cl.text(edge_map, "edge-map", "M", "parallelogram or averaged");
   cl.text(flip, "flip", "F", "symmetric, larger-face or lower-index");
+  double least_weight = 0.4;
+  cl.number(least_weight, "min-weight", "W",
+            "averaged edge maps: keep the parallelogram where -lambda, mu or nu of the average "
+            "is below W (thin diamonds throw the edge-middle points far: spikes)",
+            false);
   cl.flag(job.exact, "exact", "exact rational arithmetic (rational options only)");
   cl.flag(use_double, "double", "double arithmetic even for the exact preset");
   cl.integer(job.samples, "samples", "K", "interior samples per edge for the normal jumps", 1,
@@ -163,6 +169,8 @@ int run_pseudo_ag1(const std::vector<std::string>& args) {
                                     {{"symmetric", TS::Flip_rule::SYMMETRIC},
                                      {"larger-face", TS::Flip_rule::LARGER_FACE},
                                      {"lower-index", TS::Flip_rule::LOWER_INDEX_FACE}});
+  if (cl.given("min-weight"))
+    o.min_averaged_weight = least_weight;
   if (job.exact && use_double)
     throw Usage_error("give at most one of --exact and --double");
   if (job.preset == "exact" && !use_double)

@@ -437,6 +437,7 @@ Json run_pseudo_ag1_job(const Pseudo_ag1_job& given, std::ostream& out) {
   options["offsets"] = {o.offsets[0], o.offsets[1], o.offsets[2]};
   options["inner"] = o.inner == TS::Inner_placement::NORMAL_OFFSET ? "offset" : "cross-edge";
   options["edge_map"] = o.edge_map == TS::Edge_map::PARALLELOGRAM ? "parallelogram" : "averaged";
+  options["min_weight"] = o.min_averaged_weight;
   options["flip"] = o.flips == TS::Flip_rule::SYMMETRIC     ? "symmetric"
                     : o.flips == TS::Flip_rule::LARGER_FACE ? "larger-face"
                                                             : "lower-index";

@@ -5,6 +5,7 @@
 
 #include <CGAL/Triangular_spline/Comparators/PN_triangles.h>
 #include <CGAL/Triangular_spline/IO/surface_file.h>
+#include <CGAL/Triangular_spline/Xu/AG1_surface.h>
 #include <CGAL/Triangular_spline/Xu/Pseudo_AG1_surface.h>
 #include <CGAL/Triangular_spline/Xu/pseudo_AG1_certificate.h>
 #include <CGAL/Triangular_spline/Xu/thesis_polyhedra.h>
@@ -737,6 +738,67 @@ TEST(PseudoAG1Measures, SmoothPresetBeatsPNTrianglesOnSmoothMeshes) { // issue 1
     EXPECT_LT(jump_smooth, jump_pn);
     EXPECT_LT(jump_thesis, jump_pn);
   }
+}
+
+} // namespace
+
+namespace {
+
+TEST(PseudoAG1Global, TetrahedronAG1SurfaceExistsAndFolds) { // C14
+  using FT = Exact::FT;
+  const auto mesh = TS::thesis_polyhedron<Exact>("tetrahedron");
+  const auto a = Mesh<Exact>::Vertex_index(0);
+  const TS::AG1_walk<FT> walk = TS::walk_AG1_system(mesh, a, TS::centroid_umbrella<FT>(3));
+  ASSERT_TRUE(walk.consistent && walk.complete);
+  const TS::Surface_file<Exact> s = TS::ag1_surface_from_walk<Exact>(mesh, walk);
+  // corners (11/15)(1,1,1), (9/5,-1/5,-1/5), (-1/5,9/5,-1/5), (-1/5,-1/5,9/5)
+  auto corner = [&](std::size_t v) {
+    for (auto f : s.mesh().faces()) {
+      const auto h = s.mesh().halfedge(f);
+      const std::array<Mesh<Exact>::Vertex_index, 3> c{
+          {s.mesh().target(h), s.mesh().target(s.mesh().next(h)), s.mesh().source(h)}};
+      for (int i = 0; i < 3; ++i)
+        if (std::size_t(c[std::size_t(i)]) == v) {
+          TS::Multi_index index;
+          index[i] = 5;
+          return s.control_net(f)[TS::linear_index(index)];
+        }
+    }
+    return Exact::Vector_3(CGAL::NULL_VECTOR);
+  };
+  EXPECT_EQ(corner(0), vec<Exact>(FT(11, 15), FT(11, 15), FT(11, 15)));
+  EXPECT_EQ(corner(1), vec<Exact>(FT(9, 5), FT(-1, 5), FT(-1, 5)));
+  EXPECT_EQ(corner(2), vec<Exact>(FT(-1, 5), FT(9, 5), FT(-1, 5)));
+  EXPECT_EQ(corner(3), vec<Exact>(FT(-1, 5), FT(-1, 5), FT(9, 5)));
+  // all five diamonds of every edge on one relation, solved from the nets alone
+  const TS::Pseudo_AG1_view<TS::Surface_file<Exact>> view(s);
+  const auto c = TS::certify_pseudo_AG1(view);
+  ASSERT_TRUE(c.exact);
+  EXPECT_EQ(c.c0_edges, 6u);
+  EXPECT_EQ(c.ag1_edges, 6u);
+  // ab, ac, ad admit a reparameterization and join C^1 there; bc, bd, cd do not (lambda >= 0)
+  EXPECT_EQ(c.inadmissible_edges, 3u);
+  for (auto e : s.mesh().edges()) {
+    const auto h = TS::canonical_halfedge(e, s.mesh());
+    const bool at_a = s.mesh().source(h) == a || s.mesh().target(h) == a;
+    EXPECT_EQ(c.per_edge[e].admissible, at_a);
+    if (at_a) {
+      EXPECT_EQ(c.per_edge[e].join_order, 1);
+    }
+  }
+  // in double: tangent planes agree along every edge, but the normals reverse across the
+  // three inadmissible edges (the fold)
+  const auto dmesh = TS::thesis_polyhedron<Epick>("tetrahedron");
+  const auto dwalk =
+      TS::walk_AG1_system(dmesh, Mesh<Epick>::Vertex_index(0), TS::centroid_umbrella<double>(3));
+  const TS::Surface_file<Epick> ds = TS::ag1_surface_from_walk<Epick>(dmesh, dwalk);
+  const TS::Patch_sampler<TS::Surface_file<Epick>> sampler(ds);
+  const auto m = TS::measure_closed_surface(ds.mesh(), sampler, 9, 0, false);
+  EXPECT_LT(m.max_unoriented_jump_deg, 1e-9);
+  std::size_t reversed = 0;
+  for (double jump : m.edge_max_jump_deg)
+    reversed += jump > 179;
+  EXPECT_EQ(reversed, 3u);
 }
 
 } // namespace

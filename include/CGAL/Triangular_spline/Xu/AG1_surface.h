@@ -81,7 +81,7 @@ Surface_file<Kernel> ag1_surface_from_walk(const CGAL::Surface_mesh<typename Ker
       }
     }
     // Cramer's rule: the 3x3 system is small and exact
-    auto det3 = [](const std::array<std::array<FT, 3>, 3>& m) {
+    auto det3 = [](const std::array<std::array<FT, 3>, 3>& m) -> FT {
       return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
              m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
              m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
