@@ -918,3 +918,92 @@ TEST(PseudoAG1RealMesh, ElephantIsPseudoAG1AndBeatsPNTriangles) { // issue 11, m
 }
 
 } // namespace
+
+namespace {
+
+// The octahedron with the face (top, e0, e1) and the face below it split into k coplanar
+// triangles along the equator edge e0-e1.
+template <class K>
+CGAL::Surface_mesh<typename K::Point_3> octahedron_with_thin_faces(int k) {
+  using FT = typename K::FT;
+  CGAL::Surface_mesh<typename K::Point_3> m;
+  const auto top = m.add_vertex({0, 0, 1}), bottom = m.add_vertex({0, 0, -1});
+  const auto e0 = m.add_vertex({1, 0, 0}), e1 = m.add_vertex({0, 1, 0}),
+             e2 = m.add_vertex({-1, 0, 0}), e3 = m.add_vertex({0, -1, 0});
+  std::vector<typename CGAL::Surface_mesh<typename K::Point_3>::Vertex_index> edge{e0};
+  for (int j = 1; j < k; ++j)
+    edge.push_back(m.add_vertex({FT(k - j) / FT(k), FT(j) / FT(k), 0}));
+  edge.push_back(e1);
+  for (std::size_t j = 0; j + 1 < edge.size(); ++j) {
+    m.add_face(top, edge[j], edge[j + 1]);
+    m.add_face(bottom, edge[j + 1], edge[j]);
+  }
+  m.add_face(top, e1, e2);
+  m.add_face(top, e2, e3);
+  m.add_face(top, e3, e0);
+  m.add_face(bottom, e2, e1);
+  m.add_face(bottom, e3, e2);
+  m.add_face(bottom, e0, e3);
+  return m;
+}
+
+TEST(PseudoAG1Steps, AverageNormalIsBiasedByThinFacesAreaWeightedIsNot) { // C19
+  Pseudo_AG1_options area = Pseudo_AG1_options::exact(), average;
+  average.normal = TS::Corner_plane_normal::AVERAGE;
+  const Mesh<Exact>::Vertex_index top(0);
+  const auto reference = Pseudo_AG1_surface<Exact>(octahedron_with_thin_faces<Exact>(1), area)
+                             .corner_plane(top)
+                             .normal;
+  double previous = -1;
+  for (int k : {1, 2, 4, 8}) {
+    // area-weighted: the same vector whatever the subdivision (exact)
+    const Pseudo_AG1_surface<Exact> a(octahedron_with_thin_faces<Exact>(k), area);
+    EXPECT_EQ(a.corner_plane(top).normal, reference);
+    // plain average: tilts towards the split face as k grows
+    const Pseudo_AG1_surface<Double> b(octahedron_with_thin_faces<Double>(k), average);
+    const auto n = b.corner_plane(Mesh<Double>::Vertex_index(0)).normal;
+    const Double::Vector_3 r(CGAL::to_double(reference.x()), CGAL::to_double(reference.y()),
+                             CGAL::to_double(reference.z()));
+    const double angle = std::atan2(std::sqrt(CGAL::cross_product(n, r).squared_length()), n * r);
+    EXPECT_GT(angle, previous) << k;
+    previous = angle;
+  }
+  EXPECT_GT(previous, 0.1); // radians: about 10 degrees at k = 8
+}
+
+TEST(PseudoAG1Steps, CentroidNormalTiltsOnSkewedStars) { // C20
+  Pseudo_AG1_options centroid;
+  centroid.normal = TS::Corner_plane_normal::CENTROID;
+  centroid.offsets = {{0, 0, 0}};
+  auto tilt = [&](const std::string& name, std::size_t vertex) {
+    const auto mesh = TS::thesis_polyhedron<Double>(name);
+    const Pseudo_AG1_surface<Double> c(mesh, centroid), a(mesh);
+    const auto n = c.corner_plane(Mesh<Double>::Vertex_index(vertex)).normal;
+    const auto r = a.corner_plane(Mesh<Double>::Vertex_index(vertex)).normal;
+    return std::atan2(std::sqrt(CGAL::cross_product(n, r).squared_length()), n * r);
+  };
+  EXPECT_LT(tilt("octahedron", 0), 1e-12); // symmetric star: no tilt
+  // the V-arm bipyramid's apex (vertex 8): a skewed star
+  EXPECT_GT(tilt("v-arm", 8), 0.1);
+}
+
+TEST(PseudoAG1Steps, AutomaticShrinkingReducesTheDips) { // S7, R-19
+  Pseudo_AG1_options o;
+  o.automatic_shrinking = true;
+  const auto mesh = TS::thesis_polyhedron<Double>("tetrahedron");
+  const Pseudo_AG1_surface<Double> plain(mesh), shrunk(mesh, o);
+  EXPECT_GE(shrunk.shrinking_rounds(), 1u);
+  double before = -1e300, after = -1e300;
+  for (auto e : plain.mesh().edges()) {
+    before = std::max(before, plain.dip(e));
+    after = std::max(after, shrunk.dip(e));
+  }
+  EXPECT_LT(after, before);
+  for (auto v : shrunk.mesh().vertices()) {
+    EXPECT_LT(shrunk.corner_plane(v).star_scale, 1.0);
+    EXPECT_GE(shrunk.corner_plane(v).star_scale, 0.5);
+  }
+  EXPECT_TRUE(TS::certify_pseudo_AG1(shrunk).pseudo_AG1());
+}
+
+} // namespace
