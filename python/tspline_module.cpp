@@ -1086,30 +1086,17 @@ public:
     d["genus"] = genus; // per component
     d["reoriented"] = summary.reoriented;
     d["exact"] = s.is_exact();
-    std::size_t recentred = 0, folded = 0, equalised = 0, fallback = 0, inverted = 0;
-    std::size_t averaged = 0, dipping = 0;
-    for (auto v : s.mesh().vertices()) {
-      const auto& p = s.corner_plane(v);
-      recentred += p.recentred;
-      folded += p.folded_projection;
-      equalised += p.equalised;
-      fallback += p.normal_fallback;
-      inverted += p.inverted_corner;
-    }
-    for (auto e : s.mesh().edges()) {
-      averaged += s.edge_relation(e).averaged_fallback;
-      dipping += s.dip(e) > 0;
-    }
+    const auto f = s.flags();
     py::dict flags;
-    flags["recentred_vertices"] = recentred;
-    flags["folded_projections"] = folded;
-    flags["equalised_umbrellas"] = equalised;
-    flags["normal_fallbacks"] = fallback;
-    flags["inverted_corners"] = inverted;
-    flags["averaged_map_fallbacks"] = averaged;
-    flags["shrinking_rounds"] = s.shrinking_rounds();
-    flags["reoriented_components"] = summary.reoriented;
-    flags["dipping_edges"] = dipping;
+    flags["recentred_vertices"] = f.recentred_vertices;
+    flags["folded_projections"] = f.folded_projections;
+    flags["equalised_umbrellas"] = f.equalised_umbrellas;
+    flags["normal_fallbacks"] = f.normal_fallbacks;
+    flags["inverted_corners"] = f.inverted_corners;
+    flags["averaged_map_fallbacks"] = f.averaged_map_fallbacks;
+    flags["shrinking_rounds"] = f.shrinking_rounds;
+    flags["reoriented_components"] = f.reoriented_components;
+    flags["dipping_edges"] = f.dipping_edges;
     d["flags"] = flags;
     return d;
   }

@@ -103,7 +103,14 @@ Json measures_json(const TS::Closed_surface_measures& m, bool self_intersections
   jump["mean_edge_max"] = m.mean_edge_max_jump_deg;
   jump["mean"] = m.mean_jump_deg;
   jump["rms"] = m.rms_jump_deg;
+  jump["p50"] = m.p50_jump_deg;
+  jump["p90"] = m.p90_jump_deg;
   jump["p95"] = m.p95_jump_deg;
+  jump["p99"] = m.p99_jump_deg;
+  Json histogram = Json::object();
+  histogram["edges_deg"] = TS::jump_histogram_edges();
+  histogram["samples"] = m.jump_histogram;
+  jump["histogram"] = histogram;
   jump["max_unoriented"] = m.max_unoriented_jump_deg;
   jump["vertex_max"] = m.vertex_max_jump_deg;
   jump["input_mean_bend"] = m.mean_input_bend_deg;
@@ -206,7 +213,6 @@ Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out
 
   // AG^1 defect and undulation (M4, M6)
   double defect_max = 0, defect_sum = 0, worst_dip = -1e300;
-  std::size_t dipping = 0;
   for (auto e : surface.mesh().edges()) {
     const auto& E = surface.edge_relation(e);
     for (std::size_t i = 0; i < 3; ++i) {
@@ -215,39 +221,27 @@ Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out
       defect_max = std::max(defect_max, d);
       defect_sum += d / 3;
     }
-    const double dip = surface.dip(e);
-    worst_dip = std::max(worst_dip, dip);
-    dipping += dip > 0;
+    worst_dip = std::max(worst_dip, surface.dip(e));
   }
+  const TS::Pseudo_AG1_flags f = surface.flags();
   Json defect = Json::object();
   defect["max"] = defect_max;
   defect["mean"] = summary.edges ? defect_sum / double(summary.edges) : 0.0;
   report["ag1_defect"] = defect;
   Json undulation = Json::object();
-  undulation["dipping_edges"] = dipping;
+  undulation["dipping_edges"] = f.dipping_edges;
   undulation["worst_dip"] = worst_dip;
   report["undulation"] = undulation;
 
   Json flags = Json::object();
-  std::size_t recentred = 0, folded = 0, equalised = 0, fallback = 0, inverted = 0, averaged = 0;
-  for (auto v : surface.mesh().vertices()) {
-    const auto& p = surface.corner_plane(v);
-    recentred += p.recentred;
-    folded += p.folded_projection;
-    equalised += p.equalised;
-    fallback += p.normal_fallback;
-    inverted += p.inverted_corner;
-  }
-  for (auto e : surface.mesh().edges())
-    averaged += surface.edge_relation(e).averaged_fallback;
-  flags["recentred_vertices"] = recentred;
-  flags["folded_projections"] = folded;
-  flags["equalised_umbrellas"] = equalised;
-  flags["normal_fallbacks"] = fallback;
-  flags["inverted_corners"] = inverted;
-  flags["averaged_map_fallbacks"] = averaged;
-  flags["shrinking_rounds"] = surface.shrinking_rounds();
-  flags["reoriented_components"] = summary.reoriented;
+  flags["recentred_vertices"] = f.recentred_vertices;
+  flags["folded_projections"] = f.folded_projections;
+  flags["equalised_umbrellas"] = f.equalised_umbrellas;
+  flags["normal_fallbacks"] = f.normal_fallbacks;
+  flags["inverted_corners"] = f.inverted_corners;
+  flags["averaged_map_fallbacks"] = f.averaged_map_fallbacks;
+  flags["shrinking_rounds"] = f.shrinking_rounds;
+  flags["reoriented_components"] = f.reoriented_components;
   report["flags"] = flags;
 
   if (job.per_edge) {
@@ -323,13 +317,28 @@ Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out
       << fixed(measures.mean_jump_deg) << " deg (input bend " << fixed(measures.mean_input_bend_deg)
       << " deg); at vertices " << std::setprecision(2) << std::scientific
       << measures.vertex_max_jump_deg << std::defaultfloat << " deg\n";
+  out << "jump histogram (share of samples):";
+  {
+    const auto& edges = TS::jump_histogram_edges();
+    const double total = double(summary.edges) * double(job.samples);
+    for (std::size_t i = 0; i < measures.jump_histogram.size(); ++i)
+      if (measures.jump_histogram[i] > 0)
+        out << " " << edges[i] << "-" << edges[i + 1] << " deg " << std::setprecision(3)
+            << 100 * double(measures.jump_histogram[i]) / total << "%";
+    out << std::defaultfloat << "\n";
+  }
   out << "shape: volume ratio " << fixed(measures.volume_ratio, 3) << ", distance to input "
-      << fixed(100 * measures.hausdorff_rel) << "% of the diagonal, dipping edges " << dipping
-      << "/" << summary.edges;
-  if (recentred + folded + equalised + fallback + inverted + averaged)
-    out << "; flags: " << recentred << " re-centred, " << folded << " folded projections, "
-        << equalised << " equalised, " << fallback << " normal fallbacks, " << inverted
-        << " inverted corners, " << averaged << " averaged-map fallbacks";
+      << fixed(100 * measures.hausdorff_rel) << "% of the diagonal, dipping edges "
+      << f.dipping_edges << "/" << summary.edges << ", self-intersecting "
+      << (!check_self ? std::string("not checked (tessellation of ") + std::to_string(tessellated) +
+                            " triangles; lower --levels)"
+          : measures.self_intersecting ? "YES"
+                                       : "no");
+  if (f.raised())
+    out << "; flags: " << f.recentred_vertices << " re-centred, " << f.folded_projections
+        << " folded projections, " << f.equalised_umbrellas << " equalised, " << f.normal_fallbacks
+        << " normal fallbacks, " << f.inverted_corners << " inverted corners, "
+        << f.averaged_map_fallbacks << " averaged-map fallbacks";
   out << "\n";
   return seconds;
 }

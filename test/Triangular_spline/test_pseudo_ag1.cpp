@@ -346,6 +346,60 @@ TEST(PseudoAG1Steps, DegenerateCasesAreFlaggedNotFatal) { // C32
   EXPECT_TRUE(TS::certify_pseudo_AG1(sato).middle_edges == sato.mesh().number_of_edges());
 }
 
+// An octahedron whose top vertex sits eps above the midpoint of its neighbours +x and +y: the
+// sliver face (+x, +y, top) has an angle pi - O(eps) at the top, so the proportional umbrella
+// would get an angle of pi (a degenerate corner triangle) without R-13's equalisation.
+Mesh<Double> octahedron_with_straight_angle(double eps) {
+  Mesh<Double> m;
+  const auto top = m.add_vertex({0.5, 0.5, eps});
+  const auto px = m.add_vertex({1, 0, 0}), py = m.add_vertex({0, 1, 0});
+  const auto mx = m.add_vertex({-1, 0, 0}), my = m.add_vertex({0, -1, 0});
+  const auto bottom = m.add_vertex({0, 0, -1});
+  for (auto [a, b] : {std::pair{px, py}, {py, mx}, {mx, my}, {my, px}}) {
+    m.add_face(a, b, top);
+    m.add_face(b, a, bottom);
+  }
+  return m;
+}
+
+TEST(PseudoAG1Steps, StraightUmbrellaAnglesAreEqualisedAndFlagged) { // C32, R-13
+  for (const bool offsets : {true, false}) {
+    Pseudo_AG1_options o;
+    if (!offsets)
+      o.offsets = {{0, 0, 0}};
+    o.recentering = false;
+    const Pseudo_AG1_surface<Double> s(octahedron_with_straight_angle(1e-12), o);
+    const auto& m = s.mesh();
+    std::size_t equalised = 0;
+    for (auto v : m.vertices()) {
+      const auto& plane = s.corner_plane(v);
+      equalised += plane.equalised;
+      EXPECT_FALSE(plane.inverted_corner) << std::size_t(v);
+      // every corner triangle of the umbrella keeps a positive angle below pi
+      const auto& u = plane.umbrella;
+      for (std::size_t i = 0; i < u.size(); ++i) {
+        const auto& a = u[i];
+        const auto& b = u[(i + 1) % u.size()];
+        const double cross = a.x() * b.y() - a.y() * b.x(), dot = a.x() * b.x() + a.y() * b.y();
+        EXPECT_GT(std::atan2(cross, dot), 0.01) << std::size_t(v) << " " << i;
+      }
+    }
+    // the top (angle pi) and +x, +y (angle 0); the default offsets lift the first stars off
+    // the sliver, which opens its angles: nothing to equalise
+    const std::size_t expected = offsets ? 0 : 3;
+    EXPECT_EQ(equalised, expected) << offsets;
+    for (std::size_t v : {0, 1, 2})
+      EXPECT_EQ(s.corner_plane(Mesh<Double>::Vertex_index(v)).equalised, !offsets) << v;
+    EXPECT_EQ(s.flags().equalised_umbrellas, expected);
+    const TS::Pseudo_AG1_certificate c = TS::certify_pseudo_AG1(s);
+    EXPECT_TRUE(c.pseudo_AG1()) << offsets;
+  }
+  // a clear angle is left alone
+  EXPECT_EQ(
+      Pseudo_AG1_surface<Double>(octahedron_with_straight_angle(0.3)).flags().equalised_umbrellas,
+      0u);
+}
+
 TEST(PseudoAG1Steps, RecentredCornerLiesInsideTheProjectedStar) {
   Pseudo_AG1_options o = Pseudo_AG1_options::exact();
   const Pseudo_AG1_surface<Exact> arm(TS::thesis_polyhedron<Exact>("v-arm"), o);

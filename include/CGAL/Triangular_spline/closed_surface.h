@@ -201,10 +201,16 @@ struct Closed_surface_measures {
   std::size_t samples_per_edge = 0; ///< interior samples per edge
   /// oriented normal jump across edges (degrees): the largest
   double max_jump_deg = 0;
-  double mean_edge_max_jump_deg = 0;  ///< the mean over edges of each edge's largest jump
-  double mean_jump_deg = 0;           ///< the mean over all samples
-  double rms_jump_deg = 0;            ///< the root mean square over all samples
-  double p95_jump_deg = 0;            ///< the 95th percentile over all samples
+  double mean_edge_max_jump_deg = 0; ///< the mean over edges of each edge's largest jump
+  double mean_jump_deg = 0;          ///< the mean over all samples
+  double rms_jump_deg = 0;           ///< the root mean square over all samples
+  double p50_jump_deg = 0;           ///< the median over all samples
+  double p90_jump_deg = 0;           ///< the 90th percentile over all samples
+  double p95_jump_deg = 0;           ///< the 95th percentile over all samples
+  double p99_jump_deg = 0;           ///< the 99th percentile over all samples
+  /// samples per jump range: `jump_histogram[i]` counts the jumps in
+  /// [`jump_histogram_edges()[i]`, `jump_histogram_edges()[i + 1]`) (the last range closed)
+  std::vector<std::size_t> jump_histogram;
   double max_unoriented_jump_deg = 0; ///< \f$\max \min(\theta, 180° - \theta)\f$
   /// the largest angle between the corner normals of two faces at a common vertex: 0 for a
   /// surface that is \f$G^1\f$ at its vertices
@@ -225,6 +231,17 @@ struct Closed_surface_measures {
   double gaussian_max = 0;          ///< largest
   std::size_t tessellation_faces = 0; ///< triangles of the tessellation measured
 };
+
+/*!
+  \ingroup PkgTriangularSplineCore
+  \returns the edges (degrees) of the ranges of `Closed_surface_measures::jump_histogram`:
+  0, 0.1, 0.5, 1, 2, 5, 10, 20, 45, 90, 180 (roughly logarithmic: smooth surfaces put nearly
+  all samples below 1°, creases show up to the right)
+*/
+inline const std::vector<double>& jump_histogram_edges() {
+  static const std::vector<double> edges{0, 0.1, 0.5, 1, 2, 5, 10, 20, 45, 90, 180};
+  return edges;
+}
 
 namespace internal {
 
@@ -336,7 +353,22 @@ Closed_surface_measures measure_closed_surface(const Mesh& mesh, const Sampler& 
     m.rms_jump_deg = std::sqrt(s2 / double(all.size()));
     std::vector<double> sorted = all;
     std::sort(sorted.begin(), sorted.end());
-    m.p95_jump_deg = sorted[std::min(sorted.size() - 1, std::size_t(0.95 * double(sorted.size())))];
+    auto percentile = [&](double q) {
+      return sorted[std::min(sorted.size() - 1, std::size_t(q * double(sorted.size())))];
+    };
+    m.p50_jump_deg = percentile(0.5);
+    m.p90_jump_deg = percentile(0.9);
+    m.p95_jump_deg = percentile(0.95);
+    m.p99_jump_deg = percentile(0.99);
+  }
+  {
+    const auto& edges = jump_histogram_edges();
+    m.jump_histogram.assign(edges.size() - 1, 0);
+    for (double x : all) {
+      // the first edge above x, clamped so that 180° lands in the last range
+      const auto above = std::upper_bound(edges.begin() + 1, edges.end() - 1, x);
+      ++m.jump_histogram[std::size_t(above - edges.begin()) - 1];
+    }
   }
   // vertices: every face's corner normal against the first face's at the same vertex
   std::vector<std::array<double, 3>> first(mesh.number_of_vertices(), {{0, 0, 0}});

@@ -171,8 +171,8 @@ struct Corner_plane {
   bool normal_fallback = false;   ///< the chosen normal vanished (AG1.md R-32)
   bool recentred = false;         ///< the corner was moved into the star polygon (Fig. 6.5)
   bool folded_projection = false; ///< the projected stars are not a simple CCW polygon
-  bool equalised = false;         ///< an umbrella angle reached \f$\pi\f$ (AG1.md R-13)
-  bool inverted_corner = false;   ///< a corner triangle is not CCW about \f$N_v\f$
+  bool equalised = false; ///< an umbrella angle came within 1e-6 of \f$\pi\f$ or 0 (AG1.md R-13)
+  bool inverted_corner = false; ///< a corner triangle is not CCW about \f$N_v\f$
 };
 
 /*!
@@ -190,6 +190,28 @@ struct Pseudo_AG1_edge {
   bool end_s_valid = true;        ///< false if the star triangle at \f$s\f$ is degenerate
   bool averaged_fallback = false; ///< `AVERAGED_DIAMOND` fell back to the parallelogram
   double dihedral = 0;            ///< interior dihedral angle \f$\theta_e\f$ of the input (radians)
+};
+
+/*!
+  \ingroup PkgTriangularSplinePseudoAG1
+  \brief how often the construction of a `Pseudo_AG1_surface` left its default path (AG1.md §6
+  M7): counts of the per-vertex and per-edge flags, for reports.
+*/
+struct Pseudo_AG1_flags {
+  std::size_t recentred_vertices = 0;     ///< corners moved into their star polygon
+  std::size_t folded_projections = 0;     ///< projected stars not a simple CCW polygon
+  std::size_t equalised_umbrellas = 0;    ///< umbrella angles equalised (R-13)
+  std::size_t normal_fallbacks = 0;       ///< corner-plane normals that fell back (R-32)
+  std::size_t inverted_corners = 0;       ///< corner triangles not CCW about the normal
+  std::size_t averaged_map_fallbacks = 0; ///< averaged edge maps that kept the parallelogram
+  std::size_t dipping_edges = 0;          ///< edges with a positive dip (M6)
+  std::size_t shrinking_rounds = 0;       ///< rounds of automatic star shrinking
+  std::size_t reoriented_components = 0;  ///< components turned outward
+  /// \returns the number of vertex and edge flags raised (dips and rounds not counted)
+  std::size_t raised() const {
+    return recentred_vertices + folded_projections + equalised_umbrellas + normal_fallbacks +
+           inverted_corners + averaged_map_fallbacks;
+  }
 };
 
 namespace internal {
@@ -296,6 +318,25 @@ public:
   const Pseudo_AG1_edge<FT>& edge_relation(Edge_index e) const { return m_edges[e]; }
   /// \returns the number of rounds of automatic star shrinking (0 without it)
   std::size_t shrinking_rounds() const { return m_shrinking_rounds; }
+  /// \returns the counts of the construction's flags
+  Pseudo_AG1_flags flags() const {
+    Pseudo_AG1_flags f;
+    for (auto v : m_mesh.vertices()) {
+      const auto& p = m_planes[v];
+      f.recentred_vertices += p.recentred;
+      f.folded_projections += p.folded_projection;
+      f.equalised_umbrellas += p.equalised;
+      f.normal_fallbacks += p.normal_fallback;
+      f.inverted_corners += p.inverted_corner;
+    }
+    for (auto e : m_mesh.edges()) {
+      f.averaged_map_fallbacks += m_edges[e].averaged_fallback;
+      f.dipping_edges += dip(e) > 0;
+    }
+    f.shrinking_rounds = m_shrinking_rounds;
+    f.reoriented_components = m_summary.reoriented;
+    return f;
+  }
 
   /// \param h the halfedge \f$v \to w\f$
   /// \returns the star point \f$S_{v\to w}\f$
@@ -743,15 +784,22 @@ private:
       for (std::size_t i = 0; i < n; ++i)
         angle[i] = m_options.angles == Umbrella_angles::EQUAL ? 2 * pi / double(n)
                                                               : 2 * pi * alpha[i] / total;
-      // an angle of pi or more makes a corner triangle degenerate or inverted
-      if (*std::max_element(angle.begin(), angle.end()) >= pi - 1e-9) {
+      // an angle of pi or more makes a corner triangle degenerate or inverted. Ours: so
+      // does an angle near 0 (a sliver face at v), and in double the relations of its edges
+      // then carry 1/sin(angle) and round-off breaks the diamonds: same cure.
+      const double degenerate = 1e-6;
+      auto ill = [&] {
+        const auto [lo, hi] = std::minmax_element(angle.begin(), angle.end());
+        return *hi >= pi - degenerate || *lo <= degenerate;
+      };
+      if (ill()) {
         plane.equalised = true;
         const std::vector<double> original = angle;
         for (int step = 1; step <= 20; ++step) {
           const double w = 0.05 * step;
           for (std::size_t i = 0; i < n; ++i)
             angle[i] = (1 - w) * original[i] + w * 2 * pi / double(n);
-          if (*std::max_element(angle.begin(), angle.end()) < pi - 1e-9)
+          if (!ill())
             break;
         }
       }
