@@ -1088,15 +1088,7 @@ public:
     d["exact"] = s.is_exact();
     const auto f = s.flags();
     py::dict flags;
-    flags["recentred_vertices"] = f.recentred_vertices;
-    flags["folded_projections"] = f.folded_projections;
-    flags["equalised_umbrellas"] = f.equalised_umbrellas;
-    flags["normal_fallbacks"] = f.normal_fallbacks;
-    flags["inverted_corners"] = f.inverted_corners;
-    flags["averaged_map_fallbacks"] = f.averaged_map_fallbacks;
-    flags["shrinking_rounds"] = f.shrinking_rounds;
-    flags["reoriented_components"] = f.reoriented_components;
-    flags["dipping_edges"] = f.dipping_edges;
+    f.for_each([&](const char* name, std::size_t count) { flags[name] = count; });
     d["flags"] = flags;
     return d;
   }

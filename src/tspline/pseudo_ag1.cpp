@@ -93,8 +93,24 @@ int run_pseudo_ag1(const std::vector<std::string>& args) {
   cl.output(job.save, "save", "F.surface", "write the control nets (tspline-surface format)",
             Output_rule{{"surface"}, false, false});
   cl.report(job.report);
+  cl.output(job.ag1_system, "ag1-system", "OUT.json",
+            "solve Xu 6.1's global AG^1 system by the walk from --ag1-start and write its report "
+            "(relations, residuals, inadmissible edges, folds); exact with --exact",
+            Output_rule{{"json"}, false, false});
+  cl.integer(job.ag1_start, "ag1-start", "V", "start vertex of the walk", 0, 1LL << 40);
+  cl.text(job.ag1_umbrella, "ag1-umbrella", "U",
+          "start umbrella: centroid (the thesis's regular one) or projected (the mesh's star)");
+  cl.output(job.ag1_save, "ag1-save", "F.surface",
+            "write the AG^1 surface of the walk's solution (needs --ag1-system)",
+            Output_rule{{"surface"}, false, false});
   if (!cl.parse(args))
     return 0;
+  if (job.ag1_umbrella != "centroid" && job.ag1_umbrella != "projected")
+    throw Usage_error("--ag1-umbrella must be centroid or projected, not '" + job.ag1_umbrella +
+                      "'");
+  if (job.ag1_system.empty() &&
+      (cl.given("ag1-start") || cl.given("ag1-umbrella") || !job.ag1_save.empty()))
+    throw Usage_error("--ag1-start, --ag1-umbrella and --ag1-save need --ag1-system");
   if (job.input.empty() == job.shape.empty())
     throw Usage_error("give exactly one of --input MESH and --shape NAME");
   try {

@@ -27,6 +27,11 @@ struct Pseudo_ag1_job {
   std::string mesh;      // tessellated surface (.ply/.off/.obj); empty: none
   std::string save;      // .surface file; empty: none
   std::string report;    // JSON report; empty: none
+  // Xu 6.1's global AG^1 system, solved by the walk (AG1.md 5.2): report and surface
+  std::string ag1_system;                // JSON report of the walk; empty: not solved
+  std::string ag1_save;                  // .surface file of its AG^1 surface; empty: none
+  long long ag1_start = 0;               // start vertex
+  std::string ag1_umbrella = "centroid"; // start umbrella: centroid or projected
 };
 
 // Builds, certifies and measures the surface, compares, writes the requested files, prints a

@@ -207,6 +207,19 @@ struct Pseudo_AG1_flags {
   std::size_t dipping_edges = 0;          ///< edges with a positive dip (M6)
   std::size_t shrinking_rounds = 0;       ///< rounds of automatic star shrinking
   std::size_t reoriented_components = 0;  ///< components turned outward
+  /// calls `f(name, count)` for every field, in declaration order (for reports)
+  template <class F>
+  void for_each(F&& f) const {
+    f("recentred_vertices", recentred_vertices);
+    f("folded_projections", folded_projections);
+    f("equalised_umbrellas", equalised_umbrellas);
+    f("normal_fallbacks", normal_fallbacks);
+    f("inverted_corners", inverted_corners);
+    f("averaged_map_fallbacks", averaged_map_fallbacks);
+    f("dipping_edges", dipping_edges);
+    f("shrinking_rounds", shrinking_rounds);
+    f("reoriented_components", reoriented_components);
+  }
   /// \returns the number of vertex and edge flags raised (dips and rounds not counted)
   std::size_t raised() const {
     return recentred_vertices + folded_projections + equalised_umbrellas + normal_fallbacks +
