@@ -131,6 +131,48 @@ Net closed_surface_control_net(const Surface& surface, Status status = Status())
   return net;
 }
 
+// The umbrellas of a surface over a closed mesh (Xu's Fig. 6.10): each vertex's corner point
+// and its stars, with the spokes corner-star and the rims star-star of every face. For a
+// pseudo-AG^1 surface each umbrella lies in its vertex's corner plane, which is what makes the
+// surface G^1 there.
+template <class Surface>
+Net closed_surface_umbrellas(const Surface& surface) {
+  namespace TS = CGAL::Triangular_spline;
+  Net net;
+  std::map<Vector, std::size_t> seen;
+  auto position = [](const auto& value) -> Vector {
+    return {CGAL::to_double(value.x()), CGAL::to_double(value.y()), CGAL::to_double(value.z())};
+  };
+  for (auto f : surface.mesh().faces()) {
+    const auto& patch = surface.patch(f);
+    const int m = patch.degree();
+    if (m < 1)
+      continue;
+    for (int c = 0; c < 3; ++c) {
+      // the corner b_{m e_c} and its stars b_{(m-1) e_c + e_d}, d != c
+      auto index = [&](int main, int other) {
+        std::array<int, 3> a{{0, 0, 0}};
+        a[std::size_t(c)] = main;
+        if (other >= 0)
+          a[std::size_t(other)] = 1;
+        return TS::Multi_index{a[0], a[1], a[2]};
+      };
+      const int d = (c + 1) % 3, e = (c + 2) % 3;
+      const std::array<Vector, 3> p{{position(patch.control_point(index(m, -1))),
+                                     position(patch.control_point(index(m - 1, d))),
+                                     position(patch.control_point(index(m - 1, e)))}};
+      for (std::size_t k = 0; k < 3; ++k)
+        if (seen.emplace(p[k], net.points.size()).second)
+          net.points.push_back(
+              {p[k], k == 0 ? Point_role::Corner : Point_role::Star, Point_status::Unknown});
+      net.segments.push_back({{p[0], p[1]}});
+      net.segments.push_back({{p[0], p[2]}});
+      net.segments.push_back({{p[1], p[2]}});
+    }
+  }
+  return net;
+}
+
 // The roles of Xu's pseudo-AG^1 construction (Fig. 6.9, §6.2): the stars and the inner points
 // (corner-inner and flips) are prescribed, the edge-middle points propagated through the edge's
 // affine relation; corners come from the corner planes and keep their role colour.

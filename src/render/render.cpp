@@ -10,6 +10,7 @@
 #include "font.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -221,6 +222,9 @@ std::string format_number(double v) {
 
 struct Legend_items {
   bool roles = false, status = false;
+  // only the roles and statuses that occur get a key (e.g. umbrellas: corners and stars)
+  std::array<bool, 4> role{{false, false, false, false}};
+  std::array<bool, 3> state{{false, false, false}};
 };
 
 Legend_items net_legend_items(const Net* net) {
@@ -228,9 +232,12 @@ Legend_items net_legend_items(const Net* net) {
   if (net == nullptr)
     return items;
   items.roles = !net->points.empty();
-  for (const Net::Point& p : net->points)
+  for (const Net::Point& p : net->points) {
+    items.role[std::size_t(p.role)] = true;
+    items.state[std::size_t(p.status)] = true;
     if (p.status != Point_status::Unknown)
       items.status = true;
+  }
   return items;
 }
 
@@ -868,20 +875,28 @@ void draw_net_key(Image& image, const Layout& layout, const Net* net) {
     internal::draw_text(image, x, y, label, s, ink);
     x += internal::text_width(label, s) + 5 * s;
   };
+  auto role_item = [&](int& x, Point_role r, const std::string& label, bool square) {
+    if (items.role[std::size_t(r)])
+      item(x, label, role_colour(r), square);
+  };
+  auto status_item = [&](int& x, Point_status t, const std::string& label) {
+    if (items.state[std::size_t(t)])
+      item(x, label, status_colour(t), false);
+  };
   if (items.roles && net->status_fills) {
     int x = margin;
-    item(x, "CORNER", role_colour(Point_role::Corner), true);
-    item(x, "STAR", role_colour(Point_role::Star), false);
-    item(x, "PRESCRIBED", status_colour(Point_status::Prescribed), false);
-    item(x, "PROPAGATED", status_colour(Point_status::Propagated), false);
+    role_item(x, Point_role::Corner, "CORNER", true);
+    role_item(x, Point_role::Star, "STAR", false);
+    status_item(x, Point_status::Prescribed, "PRESCRIBED");
+    status_item(x, Point_status::Propagated, "PROPAGATED");
     return;
   }
   if (items.roles) {
     int x = margin;
-    item(x, "CORNER", role_colour(Point_role::Corner), true);
-    item(x, "STAR", role_colour(Point_role::Star), false);
-    item(x, "EDGE-MIDDLE", role_colour(Point_role::Edge_middle), false);
-    item(x, "INNER", role_colour(Point_role::Inner), false);
+    role_item(x, Point_role::Corner, "CORNER", true);
+    role_item(x, Point_role::Star, "STAR", false);
+    role_item(x, Point_role::Edge_middle, "EDGE-MIDDLE", false);
+    role_item(x, Point_role::Inner, "INNER", false);
     y += h + 5 * s;
   }
   if (items.status) {

@@ -90,6 +90,9 @@ int run_pseudo_ag1(const std::vector<std::string>& args) {
   cl.output(job.mesh, "output", "MESH.ply",
             "write the tessellated surface (.ply/.off/.obj) with normals and Gaussian curvature",
             mesh_file_output, {"mesh"});
+  cl.flag(job.split_normals, "split-normals",
+          "--output: every face its own copies of its edge points with its own normals (not "
+          "closed; shading shows the tangent-plane jumps)");
   cl.output(job.save, "save", "F.surface", "write the control nets (tspline-surface format)",
             Output_rule{{"surface"}, false, false});
   cl.report(job.report);
@@ -105,6 +108,8 @@ int run_pseudo_ag1(const std::vector<std::string>& args) {
             Output_rule{{"surface"}, false, false});
   if (!cl.parse(args))
     return 0;
+  if (job.split_normals && job.mesh.empty())
+    throw Usage_error("--split-normals needs --output");
   if (job.ag1_umbrella != "centroid" && job.ag1_umbrella != "projected")
     throw Usage_error("--ag1-umbrella must be centroid or projected, not '" + job.ag1_umbrella +
                       "'");

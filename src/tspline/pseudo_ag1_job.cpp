@@ -350,7 +350,7 @@ Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out
   }
   if (!job.mesh.empty()) {
     const TS::Closed_tessellation t =
-        TS::tessellate_closed_surface(surface.mesh(), sampler, job.mesh_levels);
+        TS::tessellate_closed_surface(surface.mesh(), sampler, job.mesh_levels, job.split_normals);
     CGAL::Surface_mesh<Epick::Point_3> tm = t.mesh;
     auto normal = tm.add_property_map<Input_mesh::Vertex_index, Epick::Vector_3>(
                         "v:normal", Epick::Vector_3(0, 0, 0))
@@ -368,6 +368,7 @@ Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out
     o["levels"] = job.mesh_levels;
     o["vertices"] = tm.number_of_vertices();
     o["faces"] = tm.number_of_faces();
+    o["split_normals"] = job.split_normals;
     report["output"] = o;
   }
   seconds["outputs"] = clock.lap();

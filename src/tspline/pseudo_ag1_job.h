@@ -18,15 +18,16 @@ struct Pseudo_ag1_job {
   std::string shape; // a solid of the thesis or of the tests (see --help)
   std::string preset = "smooth";
   CGAL::Triangular_spline::Pseudo_AG1_options options; // the preset with the overrides applied
-  bool exact = false;    // exact rational arithmetic (needs rational options)
-  int samples = 15;      // interior samples per edge for the normal jumps
-  int levels = -1;       // 4-splits per face of the measured tessellation; < 0: automatic
-  int mesh_levels = 3;   // 4-splits per face of --output
-  bool compare = true;   // measure PN triangles and Fang's order-1 blend on the same mesh
-  bool per_edge = false; // list every edge in the report
-  std::string mesh;      // tessellated surface (.ply/.off/.obj); empty: none
-  std::string save;      // .surface file; empty: none
-  std::string report;    // JSON report; empty: none
+  bool exact = false;         // exact rational arithmetic (needs rational options)
+  int samples = 15;           // interior samples per edge for the normal jumps
+  int levels = -1;            // 4-splits per face of the measured tessellation; < 0: automatic
+  int mesh_levels = 3;        // 4-splits per face of --output
+  bool compare = true;        // measure PN triangles and Fang's order-1 blend on the same mesh
+  bool per_edge = false;      // list every edge in the report
+  std::string mesh;           // tessellated surface (.ply/.off/.obj); empty: none
+  bool split_normals = false; // --output: each face its own points and normals (not closed)
+  std::string save;           // .surface file; empty: none
+  std::string report;         // JSON report; empty: none
   // Xu 6.1's global AG^1 system, solved by the walk (AG1.md 5.2): report and surface
   std::string ag1_system;                // JSON report of the walk; empty: not solved
   std::string ag1_save;                  // .surface file of its AG^1 surface; empty: none

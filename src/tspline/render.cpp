@@ -3,6 +3,7 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "files.h"
 #include "render_job.h"
 
 #include <cerrno>
@@ -105,6 +106,12 @@ int run_render(const std::vector<std::string>& args) {
              "supersampling: S x S samples per pixel, 1..4", 1, 4);
   cl.flag(perspective, "perspective", "perspective projection (default: orthographic)");
   cl.flag(no_legend, "no-legend", "no colour bar or marker key");
+  cl.flag(job.split_normals, "split-normals",
+          ".surface: every patch shaded with its own normals, so that the tangent-plane jumps "
+          "across edges show as creases");
+  cl.flag(job.umbrellas, "umbrellas",
+          ".surface, --mode net: only the umbrellas, each vertex's corner point and stars "
+          "joined (they lie in its corner plane: Xu's Fig. 6.10)");
   cl.output(job.ply, "ply", "FILE.ply",
             "also write the mesh as PLY with per-vertex curvature colours (red green "
             "blue) and curvature scalars, for MeshLab/ParaView",
@@ -114,6 +121,11 @@ int run_render(const std::vector<std::string>& args) {
     return 0;
   if (job.input.empty())
     throw Usage_error("missing --input FILE");
+  if ((job.split_normals || job.umbrellas) && lowercase_extension(job.input) != "surface")
+    throw Usage_error(std::string(job.split_normals ? "--split-normals" : "--umbrellas") +
+                      " needs a .surface input");
+  if (job.umbrellas && mode != "net")
+    throw Usage_error("--umbrellas needs --mode net");
   if (job.output.empty())
     throw Usage_error("missing --output FILE.png");
 

@@ -142,7 +142,8 @@ Scene load_surface(const Render_job& job, Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   const std::size_t triangles = scene.patches << (2 * scene.levels);
   progress.begin("tessellating " + std::to_string(triangles) + " triangles", triangles);
-  TS::Closed_tessellation t = TS::tessellate_closed_surface(input, sampler, scene.levels);
+  TS::Closed_tessellation t =
+      TS::tessellate_closed_surface(input, sampler, scene.levels, job.split_normals);
   progress.end();
   scene.tessellation_seconds = seconds_since(start);
   scene.mesh = std::move(t.mesh);
@@ -159,7 +160,8 @@ Scene load_surface(const Render_job& job, Progress& progress) {
 
   if (job.options.mode == render::Mode::Net) {
     // Xu's roles apply to the quintic nets of pseudo-AG^1; other degrees get role colours.
-    scene.net = scene.degree == 5
+    scene.net = job.umbrellas ? render::closed_surface_umbrellas(file)
+                : scene.degree == 5
                     ? render::closed_surface_control_net(file, render::Pseudo_AG1_status())
                     : render::closed_surface_control_net(file);
     scene.net.status_fills = true;

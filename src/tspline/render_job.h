@@ -23,6 +23,10 @@ struct Render_job {
   std::string report;        // JSON report
   render::Options options;
   bool quiet = false; // no summary line on `out`
+  // .surface only: every patch its own normals at shared points (creases show), and in
+  // Mode::Net only the umbrellas (corner points, stars, spokes, rims: Xu's Fig. 6.10)
+  bool split_normals = false;
+  bool umbrellas = false;
 };
 
 // Runs the job, writes the files, prints one summary line on `out` and returns the report.

@@ -1061,3 +1061,47 @@ TEST(PseudoAG1Steps, AutomaticShrinkingReducesTheDips) { // S7, R-19
 }
 
 } // namespace
+
+namespace {
+
+TEST(ClosedTessellation, WatertightByDefaultSplitOnRequest) { // the pictures of AG1.md §6
+  const Pseudo_AG1_surface<Double> s(TS::thesis_polyhedron<Double>("icosahedron"));
+  const auto& m = s.mesh();
+  const TS::Patch_sampler<Pseudo_AG1_surface<Double>> sampler(s);
+  const int levels = 2, n = 1 << levels;
+  const std::size_t V = m.number_of_vertices(), E = m.number_of_edges(), F = m.number_of_faces();
+  const TS::Closed_tessellation shared = TS::tessellate_closed_surface(m, sampler, levels);
+  EXPECT_EQ(shared.mesh.number_of_vertices(),
+            V + E * std::size_t(n - 1) + F * std::size_t((n - 1) * (n - 2) / 2));
+  EXPECT_EQ(shared.mesh.number_of_faces(), F * std::size_t(n * n));
+  EXPECT_TRUE(CGAL::is_closed(shared.mesh));
+
+  const TS::Closed_tessellation split = TS::tessellate_closed_surface(m, sampler, levels, true);
+  EXPECT_EQ(split.mesh.number_of_vertices(), F * std::size_t((n + 1) * (n + 2) / 2));
+  EXPECT_EQ(split.mesh.number_of_faces(), F * std::size_t(n * n));
+  EXPECT_FALSE(CGAL::is_closed(split.mesh));
+  // the copies of one point: the same place (C^0), each with its own face's normal, which
+  // agree at the input's vertices (G^1) and not inside its edges (the jumps)
+  std::map<std::array<long long, 3>, std::vector<std::size_t>> copies;
+  for (auto v : split.mesh.vertices()) {
+    const auto& p = split.mesh.point(v);
+    copies[{{std::llround(p.x() * 1e9), std::llround(p.y() * 1e9), std::llround(p.z() * 1e9)}}]
+        .push_back(std::size_t(v));
+  }
+  EXPECT_EQ(copies.size(), shared.mesh.number_of_vertices()); // every shared point, once
+  double at_vertices = 0, inside_edges = 0;
+  for (const auto& [key, list] : copies) {
+    double worst = 0;
+    for (std::size_t a : list)
+      for (std::size_t b : list)
+        worst = std::max(worst, TS::internal::closed_angle_deg(split.normals[a], split.normals[b]));
+    if (list.size() >= 3) // valence 5 at the icosahedron's vertices
+      at_vertices = std::max(at_vertices, worst);
+    else if (list.size() == 2)
+      inside_edges = std::max(inside_edges, worst);
+  }
+  EXPECT_LT(at_vertices, 1e-9);
+  EXPECT_GT(inside_edges, 1.0); // degrees: the thesis's icosahedron jumps by a few degrees
+}
+
+} // namespace

@@ -100,7 +100,7 @@ private:
 struct Closed_tessellation {
   /// the mesh (`Epick` points)
   CGAL::Surface_mesh<CGAL::Epick::Point_3> mesh;
-  /// per mesh vertex: the normal of the face that produced it (split per face when requested)
+  /// per mesh vertex: the normal of the face that produced it (`split_normals`: its own face)
   std::vector<std::array<double, 3>> normals;
   /// per mesh vertex: the Gaussian curvature there
   std::vector<double> gaussian;
@@ -115,12 +115,15 @@ struct Closed_tessellation {
   \param mesh the closed triangle mesh the surface is built on
   \param sampler the surface
   \param levels the subdivision level, 0 to 8
+  \param split_normals give every face its own copies of its corner and edge points, each
+  with that face's normal: the mesh is then not closed, but shading shows where the tangent
+  planes of neighbouring faces disagree (AG1.md §6, pictures)
   \throws Invalid_input if `levels` is outside [0, 8]
   \returns the tessellation
 */
 template <class Mesh, class Sampler>
-Closed_tessellation tessellate_closed_surface(const Mesh& mesh, const Sampler& sampler,
-                                              int levels) {
+Closed_tessellation tessellate_closed_surface(const Mesh& mesh, const Sampler& sampler, int levels,
+                                              bool split_normals = false) {
   if (levels < 0 || levels > 8)
     throw Invalid_input("tessellate: the level must be in [0, 8], got " + std::to_string(levels));
   using Out = CGAL::Surface_mesh<CGAL::Epick::Point_3>;
@@ -155,7 +158,9 @@ Closed_tessellation tessellate_closed_surface(const Mesh& mesh, const Sampler& s
           else
             only = a;
         typename Out::Vertex_index v;
-        if (zeros == 2) {
+        if (split_normals) {
+          v = add(sampler(f, w));
+        } else if (zeros == 2) {
           const auto mv = mesh.source(side[std::size_t(only)]);
           if (corner[mv] == Out::null_vertex())
             corner[mv] = add(sampler(f, w));
