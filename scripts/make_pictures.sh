@@ -76,6 +76,12 @@ done
   --output "$fig/pag1_torus_jump.png" >/dev/null
 "$tspline" render --input "$work/pag1_octahedron.surface" --mode shaded --size 640x480 \
   --output "$fig/pag1_octahedron_shaded.png" >/dev/null
+# Xu's Fig. 6.10: the umbrellas (corner point and stars of every vertex, in its corner plane),
+# and the octahedron again with split normals: each patch its own, so the jumps show as creases.
+"$tspline" render --input "$work/pag1_icosahedron.surface" --mode net --umbrellas --size 640x480 \
+  --output "$fig/pag1_icosahedron_umbrellas.png" >/dev/null
+"$tspline" render --input "$work/pag1_octahedron.surface" --mode shaded --split-normals \
+  --size 640x480 --output "$fig/pag1_octahedron_split.png" >/dev/null
 # A real mesh: CGAL's elephant (data/elephant.off, 5558 faces, from CGAL's sample data in
 # Debian's libcgal-demo, data/meshes/elephant.off). Seen from the side (y is up in the file).
 # Its jumps: max 40.8 deg on a single edge, mean of the per-edge maxima 3.6 deg, so the colours
