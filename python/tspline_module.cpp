@@ -805,7 +805,7 @@ public:
   virtual py::array_t<double> control_nets() const = 0;
   virtual py::dict certify(double tolerance) const = 0;
   virtual py::dict measure(int samples, int levels, std::optional<bool> self_check) const = 0;
-  virtual py::tuple tessellate(int levels) const = 0;
+  virtual py::tuple tessellate(int levels, bool split_normals) const = 0;
   virtual py::tuple evaluate(const Faces& face_ids, const Points& weights) const = 0;
   virtual void save(const std::string& path) const = 0;
 };
@@ -980,12 +980,12 @@ public:
     return d;
   }
 
-  py::tuple tessellate(int levels) const override {
+  py::tuple tessellate(int levels, bool split_normals) const override {
     TS::Closed_tessellation t;
     {
       py::gil_scoped_release release;
       const TS::Patch_sampler<Surface> sampler(*m_surface);
-      t = TS::tessellate_closed_surface(mesh(), sampler, levels);
+      t = TS::tessellate_closed_surface(mesh(), sampler, levels, split_normals);
     }
     const py::ssize_t V = static_cast<py::ssize_t>(t.mesh.number_of_vertices());
     py::array_t<double> normals({V, py::ssize_t(3)}), gaussian(V);
@@ -1391,7 +1391,7 @@ PYBIND11_MODULE(_core, m) {
       .def("certify", &Closed_surface::certify, py::arg("tolerance"))
       .def("measure", &Closed_surface::measure, py::arg("samples"), py::arg("levels"),
            py::arg("self_intersections"))
-      .def("tessellate", &Closed_surface::tessellate, py::arg("levels"))
+      .def("tessellate", &Closed_surface::tessellate, py::arg("levels"), py::arg("split_normals"))
       .def("evaluate", &Closed_surface::evaluate, py::arg("face_ids"), py::arg("bary"))
       .def("save", &Closed_surface::save, py::arg("path"))
       .def_property_readonly("degree", &Closed_surface::degree)

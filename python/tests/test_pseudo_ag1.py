@@ -169,6 +169,21 @@ def test_tessellate_is_watertight():
     np.testing.assert_allclose(np.linalg.norm(normals, axis=1), 1, atol=1e-12)
 
 
+def test_split_normals_show_the_jumps():
+    v, f = tspline.thesis_polyhedron("octahedron")
+    s = tspline.PseudoAG1Surface(v, f, preset="thesis")
+    shared = s.tessellate(levels=1)
+    points, triangles, normals, _ = s.tessellate(levels=1, split_normals=True)
+    assert len(points) == 8 * 6 and len(triangles) == len(shared[1]) == 8 * 4
+    # the copies of an edge's midpoint: one place, two normals (the jump across the edge)
+    key = np.round(points, 9)
+    _, inverse, counts = np.unique(key, axis=0, return_inverse=True, return_counts=True)
+    assert len(counts) == len(shared[0])
+    pairs = [np.flatnonzero(inverse.ravel() == i) for i in np.flatnonzero(counts == 2)]
+    angles = [np.degrees(np.arccos(np.clip(normals[a] @ normals[b], -1, 1))) for a, b in pairs]
+    assert len(pairs) == 12 and min(angles) > 1
+
+
 def test_reoriented_components():
     inward = TETRA_F[:, ::-1]
     two_v = np.vstack([TETRA_V, TETRA_V + [5, 0, 0]])

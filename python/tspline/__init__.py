@@ -486,11 +486,14 @@ class ClosedSurface:
         check = None if self_intersections is None else bool(self_intersections)
         return self._core.measure(int(samples), int(levels), check)
 
-    def tessellate(self, levels=3):
+    def tessellate(self, levels=3, split_normals=False):
         """A watertight triangulation with 4**levels triangles per face (levels 0-8):
         ``(points (V, 3), triangles (T, 3), normals (V, 3), gaussian (V,))``. Corner and edge
-        points are shared by the faces; triangle t lies on face ``t // 4**levels``."""
-        return self._core.tessellate(int(levels))
+        points are shared by the faces; triangle t lies on face ``t // 4**levels``. With
+        ``split_normals=True`` every face has its own copies of its corner and edge points,
+        each with that face's normal: not closed, but shading then shows where the tangent
+        planes jump across the edges."""
+        return self._core.tessellate(int(levels), bool(split_normals))
 
     def evaluate(self, face_ids, bary):
         """Points and unit normals of the patches: ``face_ids`` (k,) face indices, ``bary``
