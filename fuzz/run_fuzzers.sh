@@ -13,8 +13,8 @@ fuzz_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 jobs=${FUZZ_JOBS:-2}
 fuzzers=("$@")
 if [[ ${#fuzzers[@]} -eq 0 ]]; then
-  fuzzers=(fuzz_xyz fuzz_xyz_exact fuzz_query fuzz_spline fuzz_spline_exact fuzz_surface fuzz_off
-           fuzz_obj fuzz_ply fuzz_stl)
+  fuzzers=(fuzz_xyz fuzz_xyz_exact fuzz_query fuzz_npy fuzz_spline fuzz_spline_exact fuzz_surface
+           fuzz_off fuzz_obj fuzz_ply fuzz_stl)
 fi
 
 # A report of undefined behaviour with its stack, like ASan's.

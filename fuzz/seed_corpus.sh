@@ -26,6 +26,7 @@ for fuzzer in fuzz_xyz fuzz_xyz_exact; do
   seed $fuzzer "$data"/*.xyz "$data"/bad/*.xyz "$root"/fuzz/findings/xyz_*
 done
 printf '0 0 1/3\n1/2 0 -7/9\n0 0.1 2\n# exact decimals and fractions\n' >"$out/fuzz_xyz_exact/fractions.xyz"
+seed fuzz_npy "$data"/*.npy "$data"/bad/*.npy "$root"/fuzz/findings/*.npy
 seed fuzz_query "$data"/*.xy "$data"/bad/*.xy "$data"/franke_100.xyz "$root"/fuzz/findings/query_*
 for fuzzer in fuzz_spline fuzz_spline_exact; do
   seed $fuzzer "$data"/*.spline "$data"/bad/*.spline "$root"/fuzz/findings/spline_*

@@ -25,6 +25,8 @@
 #include <CGAL/Triangular_spline/evaluate.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 
+#include "render/scene.h"
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -43,6 +45,7 @@
 namespace py = pybind11;
 namespace TS = CGAL::Triangular_spline;
 namespace TSP = CGAL::Triangular_spline::parameters;
+namespace render = tspline::render;
 
 namespace {
 
@@ -124,6 +127,75 @@ TS::Outside parse_outside(const std::string& outside) {
   throw TS::Invalid_input("outside must be nan, nearest or linear, not '" + outside + "'");
 }
 
+// tspline.render: the options of `tspline render`, from the keywords the Python layer passes
+// (checked there for types; the renderer checks the ranges with the CLI's messages).
+render::Options render_options(const py::dict& o) {
+  render::Options options;
+  try {
+    options.mode = render::parse_mode(o["mode"].cast<std::string>());
+  } catch (const std::invalid_argument&) {
+    throw TS::Invalid_input("mode must be shaded, curvature, isophotes, net or jump, not '" +
+                            o["mode"].cast<std::string>() + "'");
+  }
+  options.width = o["width"].cast<int>();
+  options.height = o["height"].cast<int>();
+  options.azimuth = o["azimuth"].cast<double>();
+  options.elevation = o["elevation"].cast<double>();
+  options.perspective = o["perspective"].cast<bool>();
+  if (!o["light"].is_none())
+    options.light = o["light"].cast<render::Vector>();
+  options.bands = o["bands"].cast<int>();
+  if (!o["range"].is_none()) {
+    const double range = o["range"].cast<double>();
+    if (!(range > 0) || !std::isfinite(range))
+      throw TS::Invalid_input("range must be a finite number > 0");
+    options.curvature_range = range;
+    options.jump_range = range;
+  }
+  options.supersampling = o["samples"].cast<int>();
+  options.legend = o["legend"].cast<bool>();
+  return options;
+}
+
+std::optional<int> render_levels(const py::dict& o) {
+  if (o["levels"].is_none())
+    return std::nullopt;
+  const int levels = o["levels"].cast<int>();
+  if (levels < 0 || levels > 8)
+    throw TS::Invalid_input("levels must be between 0 and 8, not " + std::to_string(levels));
+  return levels;
+}
+
+// The picture as a PNG file (the path returned) or, without a path, an (H, W, 3) uint8 array
+// that owns the rasteriser's pixels (no copy).
+py::object image_result(render::Image image, const std::optional<std::string>& output) {
+  if (output) {
+    py::gil_scoped_release release;
+    render::write_png(*output, image);
+  }
+  if (output)
+    return py::str(*output);
+  auto* pixels = new std::vector<std::uint8_t>(std::move(image.pixels));
+  py::capsule owner(pixels, [](void* p) { delete static_cast<std::vector<std::uint8_t>*>(p); });
+  return py::array_t<std::uint8_t>(
+      {py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(3)}, pixels->data(), owner);
+}
+
+// tspline.render of a file, as `tspline render --input path` draws it.
+py::object render_file(const std::string& path, const std::optional<std::string>& output,
+                       const py::dict& o) {
+  const render::Options options = render_options(o);
+  const std::optional<int> levels = render_levels(o);
+  render::Image image;
+  {
+    py::gil_scoped_release release;
+    render::Progress quiet(false);
+    const render::Scene scene = render::load_scene(path, options.mode, levels, quiet);
+    image = render::render_scene(scene, options);
+  }
+  return image_result(std::move(image), output);
+}
+
 // What the C1 fit was asked for: with_values() refits with the same settings.
 struct Fit_settings {
   std::string fit = "adaptive";
@@ -152,6 +224,9 @@ public:
   virtual int degree() const = 0;
   virtual std::string kind() const = 0;
   virtual py::object free_parameters() const = 0;
+  // tspline.render: the tessellated network drawn as `tspline render` draws its .spline file
+  virtual py::object render(const std::optional<std::string>& output,
+                            const py::dict& options) const = 0;
 };
 
 // A network over a domain, the locator on (a copy of) that domain, and for each domain vertex
@@ -409,6 +484,21 @@ public:
       return py::int_(m_network->number_of_free_parameters());
     else
       return py::none();
+  }
+
+  py::object render(const std::optional<std::string>& output, const py::dict& o) const override {
+    const render::Options options = render_options(o);
+    const std::optional<int> levels = render_levels(o);
+    if (options.mode == render::Mode::Jump)
+      throw TS::Invalid_input("jump mode needs a closed surface (normal jumps across its edges); "
+                              "a spline over a planar domain has none");
+    render::Image image;
+    {
+      py::gil_scoped_release release;
+      image =
+          render::render_scene(render::network_scene(*m_network, options.mode, levels), options);
+    }
+    return image_result(std::move(image), output);
   }
 
 private:
@@ -1354,7 +1444,9 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("exact", &Spline::exact)
       .def_property_readonly("degree", &Spline::degree)
       .def_property_readonly("kind", &Spline::kind)
-      .def_property_readonly("free_parameters", &Spline::free_parameters);
+      .def_property_readonly("free_parameters", &Spline::free_parameters)
+      .def("render", &Spline::render, py::arg("output"), py::arg("options"));
+  m.def("render_file", &render_file, py::arg("path"), py::arg("output"), py::arg("options"));
 
   m.def(
       "c1",

@@ -3,8 +3,9 @@
 The Python face of the C++ library Triangular_spline: Xu's C^1 quintic spline over the
 Delaunay triangulation of the data (``C1Interpolator``, in the role of scipy's
 ``CloughTocher2DInterpolator``), Mann's interpolant (``MannInterpolator``), saved splines
-(``load``), Fang's blend of a mesh (``blend``), and Xu's pseudo-AG^1 surfaces over closed
-triangle meshes (``PseudoAG1Surface``, with ``pn_triangles`` as a comparator). Every call
+(``load``), Fang's blend of a mesh (``blend``), Xu's pseudo-AG^1 surfaces over closed
+triangle meshes (``PseudoAG1Surface``, with ``pn_triangles`` as a comparator), and pictures of
+any of them (``render``, as ``tspline render`` draws them). Every call
 into the library releases the GIL.
 
 >>> import numpy as np, tspline
@@ -25,13 +26,17 @@ Library errors are Python exceptions with the library's message: invalid input
 ``RuntimeError``.
 """
 
+import os as _os
+import tempfile as _tempfile
+
 import numpy as _np
 
 from . import _core
 
 __all__ = ["C1Interpolator", "MannInterpolator", "Interpolator", "load", "blend",
            "ClosedSurface", "PseudoAG1Surface", "load_surface", "pn_triangles",
-           "thesis_polyhedron", "thesis_polyhedron_names", "control_point_index", "__version__"]
+           "thesis_polyhedron", "thesis_polyhedron_names", "control_point_index", "render",
+           "__version__"]
 
 __version__ = _core.__version__
 
@@ -692,3 +697,74 @@ def thesis_polyhedron_names():
     ['tetrahedron', 'sato', 'octahedron']
     """
     return list(_core.thesis_polyhedron_names())
+
+
+_RENDER_MODES = ("shaded", "curvature", "isophotes", "net", "jump")
+
+
+def _pair(value, what, kind):
+    try:
+        a, b = value
+        return kind(a), kind(b)
+    except (TypeError, ValueError):
+        raise ValueError(f"{what} must be a pair of numbers, not {value!r}") from None
+
+
+def render(source, path=None, *, mode="shaded", view=(-35, 35), size=(800, 600), levels=None,
+           bands=12, range=None, light=None, perspective=False, samples=2, legend=True):
+    """Draws a spline or surface as ``tspline render`` does: the same tessellation (normals
+    and Gaussian curvature from the exact patch derivatives), the same software rasteriser,
+    so the same options give the same pixels.
+
+    ``source``: a ``C1Interpolator``, ``MannInterpolator`` or loaded spline (drawn from
+    memory), a ``ClosedSurface`` or ``PseudoAG1Surface`` (drawn as its ``.surface`` file),
+    or a path to a ``.spline``, ``.surface`` or mesh file (``.ply/.off/.obj/.stl``).
+    ``path``: the PNG file to write, whose path is returned; without it, the picture is
+    returned as an ``(H, W, 3)`` ``uint8`` array (rows from the top).
+
+    The keywords are the options of ``tspline render``: ``mode`` (``"shaded"``,
+    ``"curvature"``, ``"isophotes"``, ``"net"``, or ``"jump"`` for closed surfaces),
+    ``view=(azimuth, elevation)`` in degrees (MATLAB's convention; ``(0, 90)`` is the top
+    view), ``size=(width, height)``, ``levels`` (4-split levels of the tessellation; default
+    about 2.6e5 triangles), ``bands`` (isophotes), ``range`` (where the curvature or jump
+    colours saturate), ``light=(x, y, z)``, ``perspective``, ``samples`` (per pixel along each
+    axis, 1 to 4) and ``legend``.
+
+    >>> import numpy as np, tspline
+    >>> rng = np.random.default_rng(0)
+    >>> points = rng.random((100, 2))
+    >>> f = tspline.C1Interpolator(points, np.sin(3 * points[:, 0]) * points[:, 1])
+    >>> image = tspline.render(f, mode="curvature", size=(320, 240))
+    >>> image.shape, image.dtype
+    ((240, 320, 3), dtype('uint8'))
+    >>> v, faces = tspline.thesis_polyhedron("icosahedron")
+    >>> tspline.render(tspline.PseudoAG1Surface(v, faces), mode="jump", size=(64, 48)).shape
+    (48, 64, 3)
+    """
+    if mode not in _RENDER_MODES:
+        raise ValueError(f"mode must be one of {', '.join(_RENDER_MODES)}, not {mode!r}")
+    azimuth, elevation = _pair(view, "view", float)
+    width, height = _pair(size, "size", int)
+    if light is not None:
+        light = tuple(float(c) for c in light)
+        if len(light) != 3:
+            raise ValueError(f"light must be three numbers (x, y, z), not {light!r}")
+    options = {"mode": mode, "width": width, "height": height, "azimuth": azimuth,
+               "elevation": elevation, "perspective": bool(perspective), "light": light,
+               "bands": int(bands), "range": None if range is None else float(range),
+               "samples": int(samples), "legend": bool(legend),
+               "levels": None if levels is None else int(levels)}
+    output = None if path is None else _os.fspath(path)
+    if isinstance(source, Interpolator):
+        return source._core.render(output, options)
+    if isinstance(source, ClosedSurface):
+        # drawn from its file, as `tspline render` draws the file `pseudo-ag1 --save` writes:
+        # the closed tessellation, Fig. 6.9 net and jump curves live with the file reader
+        with _tempfile.TemporaryDirectory(prefix="tspline_render_") as directory:
+            saved = _os.path.join(directory, "surface.surface")
+            source.save(saved)
+            return _core.render_file(saved, output, options)
+    if isinstance(source, (str, _os.PathLike)):
+        return _core.render_file(_os.fspath(source), output, options)
+    raise TypeError("render: expected an interpolator, a closed surface or a file path, not "
+                    f"{type(source).__name__}")

@@ -184,3 +184,41 @@ def thesis_polyhedron(
     name: str,
 ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]: ...
 def thesis_polyhedron_names() -> list[str]: ...
+
+# ---- pictures: tspline render ------------------------------------------------------------
+
+RenderMode = Literal["shaded", "curvature", "isophotes", "net", "jump"]
+RenderSource = Union[Interpolator, ClosedSurface, str, os.PathLike[str]]
+
+@overload
+def render(
+    source: RenderSource,
+    path: None = ...,
+    *,
+    mode: RenderMode = ...,
+    view: Tuple[float, float] = ...,
+    size: Tuple[int, int] = ...,
+    levels: Optional[int] = ...,
+    bands: int = ...,
+    range: Optional[float] = ...,
+    light: Optional[Tuple[float, float, float]] = ...,
+    perspective: bool = ...,
+    samples: int = ...,
+    legend: bool = ...,
+) -> npt.NDArray[np.uint8]: ...
+@overload
+def render(
+    source: RenderSource,
+    path: Union[str, os.PathLike[str]],
+    *,
+    mode: RenderMode = ...,
+    view: Tuple[float, float] = ...,
+    size: Tuple[int, int] = ...,
+    levels: Optional[int] = ...,
+    bands: int = ...,
+    range: Optional[float] = ...,
+    light: Optional[Tuple[float, float, float]] = ...,
+    perspective: bool = ...,
+    samples: int = ...,
+    legend: bool = ...,
+) -> str: ...

@@ -2,6 +2,7 @@
 
 #include "command_line.h"
 #include "commands.h"
+#include "files.h"
 #include "mann_job.h"
 
 #include <iostream>
@@ -53,10 +54,14 @@ int run_mann(const std::vector<std::string>& args) {
       "default quintic) are reproduced exactly, since the estimated derivatives are then "
       "exact; Mann's degree-n precision needs exact derivatives, which scattered data do not "
       "give. Evaluate a saved network with 'tspline eval'.");
-  cl.describe("Input: '.xyz' (one 'x y z' per line, Delaunay triangulation of (x, y)) or a "
+  cl.describe("Input: '.xyz' (one 'x y z' per line, Delaunay triangulation of (x, y)), '.npy' "
+              "(an (n, 3) array, or columns chosen with --columns) or a "
               "triangle mesh (.off/.obj/.ply/.stl) whose vertex (x, y) is the domain and z "
               "the height.");
-  cl.input(job.input, "FILE", "scattered points (.xyz) or triangle mesh");
+  cl.input(job.input, "FILE", "scattered points (.xyz, .npy) or triangle mesh");
+  cl.text(job.columns, "columns", "I,J,K",
+          "the indices (from 0) of the x, y and z columns of a .npy input; default: all three "
+          "of an (n, 3) array");
   cl.integer(job.degree, "degree", "N", "patch degree, 5..13 (C^1 from 5, C^2 from 9)", 5, 13,
              " (C^1 needs degree 4k+1 = 5)");
   cl.flag(job.exact, "exact", "exact rational arithmetic: the certificate is a proof");
@@ -69,6 +74,8 @@ int run_mann(const std::vector<std::string>& args) {
     return 0;
   if (job.input.empty())
     throw Usage_error("missing --input FILE");
+  if (!job.columns.empty() && lowercase_extension(job.input) != "npy")
+    throw Usage_error("--columns chooses the columns of a .npy input");
   const Job_result result = run_mann_job(job, cl.summary_stream());
   if (!result.certified)
     std::cerr << "tspline mann: the interpolant failed its C^1 certificate\n";

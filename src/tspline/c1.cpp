@@ -20,13 +20,15 @@ int run_c1(const std::vector<std::string>& args) {
               "handles degenerate frames, and certifies C^1 continuity on every interior edge "
               "(exactly with --exact).");
   cl.describe("Input: '.xyz' (one 'x y z' per line, Delaunay triangulation of (x, y)), '.csv' "
-              "(a header line naming the columns; --columns chooses them) or a "
+              "(a header line naming the columns; --columns chooses them), '.npy' (a NumPy "
+              "(n, 3) array, or (n, k) with --columns choosing columns by index) or a "
               "triangle mesh (.off/.obj/.ply/.stl) whose vertex (x, y) is the domain and z "
               "the height; holes and non-convex boundaries of a mesh are kept.");
-  cl.input(job.input, "FILE", "scattered points (.xyz, .csv) or triangle mesh");
+  cl.input(job.input, "FILE", "scattered points (.xyz, .csv, .npy) or triangle mesh");
   cl.text(job.columns, "columns", "X,Y,Z",
-          "the header names of the x, y and z columns of a .csv input (and of zx, zy with "
-          "--gradients); default: the columns named x, y, z");
+          "the header names of the x, y and z columns of a .csv input, or their indices "
+          "(from 0) in a .npy array (and of zx, zy with --gradients); default: the columns "
+          "named x, y, z, or all the columns of an (n, 3) array");
   cl.text(job.fit, "fit", "MODE",
           "adaptive (interpolate; local polynomials where they resolve the data, "
           "least thin-plate energy where they do not: accurate on dense and sparse "
@@ -70,7 +72,8 @@ int run_c1(const std::vector<std::string>& args) {
   cl.output(job.mesh, "mesh", "FILE", "write the tessellated surface (.ply/.off/.obj)",
             mesh_file_output);
   cl.integer(job.levels, "levels", "L", "4-split levels of the tessellation (0..8)", 0, 8);
-  cl.text(job.query, "query", "FILE.xy", "evaluate at these points ('x y' per line)");
+  cl.text(job.query, "query", "FILE.xy",
+          "evaluate at these points ('x y' per line, or the columns 0 and 1 of a .npy array)");
   cl.output(job.values, "values", "OUT.txt",
             "one value per query point, 'nan' outside the domain ('-': stdout)", {{}, true});
   if (!cl.parse(args))

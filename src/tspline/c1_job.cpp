@@ -5,6 +5,7 @@
 #include "csv_input.h"
 #include "files.h"
 #include "mesh_output.h"
+#include "point_input.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
@@ -116,17 +117,22 @@ Input<K> read_input(const std::string& path, bool rescale, bool gradients,
     return input;
   }
   const std::string ext = lowercase_extension(path);
-  if (gradients && ext != "xyz" && ext != "txt" && ext != "csv")
+  if (gradients && ext != "xyz" && ext != "txt" && ext != "csv" && ext != "npy")
     throw TS::Invalid_input("'" + path +
                             "': --gradients needs scattered points 'x y z zx zy' "
-                            "(.xyz or .csv)");
-  if (ext == "xyz" || ext == "txt" || ext == "csv") {
-    std::ifstream file = open_input(path);
-    // CSV: the chosen columns as .xyz lines, checked by the same reader
-    std::istringstream csv(ext == "csv" ? csv_as_xyz(file, path, columns, gradients)
-                                        : std::string());
-    std::istream& in = ext == "csv" ? static_cast<std::istream&>(csv) : file;
-    TS::Scattered_data<K> data = TS::read_xyz<K>(in, path, gradients);
+                            "(.xyz, .csv or .npy)");
+  if (ext == "xyz" || ext == "txt" || ext == "csv" || ext == "npy") {
+    TS::Scattered_data<K> data;
+    if (ext == "npy") {
+      data = read_npy_scattered<K>(path, columns, gradients);
+    } else {
+      std::ifstream file = open_input(path);
+      // CSV: the chosen columns as .xyz lines, checked by the same reader
+      std::istringstream csv(ext == "csv" ? csv_as_xyz(file, path, columns, gradients)
+                                          : std::string());
+      std::istream& in = ext == "csv" ? static_cast<std::istream&>(csv) : file;
+      data = TS::read_xyz<K>(in, path, gradients);
+    }
     // Rescaled before triangulating: the Delaunay triangulation of the rescaled points
     // (and dz/dy' = dz/dy / 2^exponent).
     const int exponent = rescale ? rescale_exponent(data.points) : 0;
@@ -157,7 +163,7 @@ Input<K> read_input(const std::string& path, bool rescale, bool gradients,
             {}};
   }
   throw TS::Invalid_input("'" + path + "': unknown input format '." + ext +
-                          "' (expected .xyz or .csv for scattered points, or "
+                          "' (expected .xyz, .csv or .npy for scattered points, or "
                           ".off/.obj/.ply/.stl)");
 }
 
@@ -447,8 +453,7 @@ Json run(const C1_job& job, std::ostream& out) {
   if (!job.query.empty()) {
     if (job.values.empty())
       throw TS::Invalid_input("--query needs --values OUT.txt for the results");
-    std::ifstream query_file = open_input(job.query);
-    const auto queries = TS::read_query_points<K>(query_file, job.query);
+    const auto queries = read_query_file<K>(job.query);
     const TS::Domain_locator<K> locator(d);
     const std::vector<double> values = TS::evaluate_functional(spline, locator, queries);
     std::ofstream values_file;
@@ -632,8 +637,9 @@ Json run_c1_job(const C1_job& job, std::ostream& out) {
     throw Usage_error("--fix must be reroute or perturb, not '" + job.fix + "'");
   if (job.levels < 0 || job.levels > 8)
     throw Usage_error("--levels must be between 0 and 8");
-  if (!job.columns.empty() && lowercase_extension(job.input) != "csv")
-    throw Usage_error("--columns chooses the columns of a .csv input");
+  if (!job.columns.empty() && lowercase_extension(job.input) != "csv" &&
+      lowercase_extension(job.input) != "npy")
+    throw Usage_error("--columns chooses the columns of a .csv or .npy input");
   return job.exact ? run<Exact>(job, out) : run<Fast>(job, out);
 }
 

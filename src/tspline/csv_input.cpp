@@ -120,4 +120,36 @@ std::string csv_as_xyz(std::istream& in, const std::string& source, const std::s
   return text;
 }
 
+std::vector<std::size_t> npy_column_indices(const std::string& columns, std::size_t rows,
+                                            std::size_t array_columns, bool gradients,
+                                            const std::string& source) {
+  namespace TS = CGAL::Triangular_spline;
+  const std::size_t wanted = gradients ? 5 : 3;
+  const std::string names = gradients ? "x, y, z, zx, zy" : "x, y, z";
+  std::vector<std::size_t> index;
+  if (columns.empty()) {
+    if (array_columns != wanted)
+      throw TS::Invalid_input(source + ": an array of shape (" + std::to_string(rows) + ", " +
+                              std::to_string(array_columns) + "): choose the columns of " + names +
+                              " with --columns (indices from 0, e.g. --columns " +
+                              (gradients ? "0,1,2,3,4" : "0,1,2") + ")");
+    for (std::size_t c = 0; c < wanted; ++c)
+      index.push_back(c);
+    return index;
+  }
+  for (const std::string& field : fields(columns)) {
+    // digits only: stoul would take "-1", " 2" or "1x"
+    if (field.empty() || field.size() > 9 ||
+        !std::all_of(field.begin(), field.end(), [](unsigned char c) { return std::isdigit(c); }))
+      throw TS::Invalid_input("--columns of a .npy input are column indices from 0 (e.g. 0,1,2), "
+                              "not '" +
+                              columns + "'");
+    index.push_back(static_cast<std::size_t>(std::stoul(field)));
+  }
+  if (index.size() != wanted)
+    throw TS::Invalid_input("--columns expects " + std::to_string(wanted) + " indices (" + names +
+                            "), got '" + columns + "'");
+  return index;
+}
+
 } // namespace tspline

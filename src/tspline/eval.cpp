@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "eval_job.h"
 #include "files.h"
+#include "geotiff.h"
 
 #include <cerrno>
 #include <cmath>
@@ -94,7 +95,9 @@ int run_eval(const std::vector<std::string>& args) {
       "'x,y,z[,zx,zy[,zxx,zxy,zyy]]' (numbers as %.17g, 'nan' where there is no value), or, "
       "with --grid and an output ending in .asc, an ESRI ASCII grid of the values (square "
       "cells, rows from north to south, NODATA_value -9999; the cells are centred on the grid "
-      "nodes).");
+      "nodes), or, with --grid and an output ending in .tif, a GeoTIFF (where tspline was built "
+      "with GDAL): one float64 band per column (z, zx, zy, zxx, zxy, zyy), rows from north to "
+      "south, pixels centred on the nodes, NaN as no-data, no coordinate reference system.");
   cl.describe(
       "Points outside a boundary edge by a rounding error (at most 1e-9 of the edge's length, "
       "or 1e-13 of the largest coordinate) are evaluated on the edge. Farther points get "
@@ -103,7 +106,8 @@ int run_eval(const std::vector<std::string>& args) {
       "vertex the derivatives are those of one incident patch.");
   cl.input(job.input, "FILE.spline", "the spline to evaluate (dimension 1)");
   cl.text(job.query, "query", "FILE.xy",
-          "query points, 'x y' per line (a third column, as in .xyz files, is ignored)");
+          "query points, 'x y' per line (a third column, as in .xyz files, is ignored), or "
+          "a .npy array (its columns 0 and 1)");
   cl.text(grid, "grid", "XMIN,XMAX,YMIN,YMAX,NX,NY",
           "a regular grid of NX x NY nodes, both ends included (CSV rows: x fastest, y "
           "increasing)");
@@ -113,8 +117,8 @@ int run_eval(const std::vector<std::string>& args) {
   cl.flag(job.exact, "exact",
           "read and evaluate in exact rational arithmetic (slower; the "
           "printed numbers are the exact results rounded to double)");
-  cl.output(job.output, "output", "OUT", "CSV file, '-' for stdout, or FILE.asc with --grid",
-            {{}, true});
+  cl.output(job.output, "output", "OUT",
+            "CSV file, '-' for stdout, or FILE.asc or FILE.tif with --grid", {{}, true});
   if (!cl.parse(args))
     return 0;
   if (job.input.empty())
@@ -129,7 +133,15 @@ int run_eval(const std::vector<std::string>& args) {
     job.use_grid = true;
     job.grid = parse_grid(grid);
   }
-  if (lowercase_extension(job.output) == "asc") {
+  const std::string extension = lowercase_extension(job.output);
+  if (extension == "tif" || extension == "tiff") {
+    if (!geotiff_available())
+      throw Usage_error(geotiff_unavailable_message());
+    if (!job.use_grid)
+      throw Usage_error("a GeoTIFF (.tif) output needs --grid");
+    geotiff_pixel_size(job.grid); // checked before the spline is read
+  }
+  if (extension == "asc") {
     if (!job.use_grid)
       throw Usage_error("an ESRI ASCII grid (.asc) output needs --grid");
     if (job.derivatives > 0)

@@ -1,9 +1,11 @@
 // tspline eval: read a saved spline, locate and evaluate jets (value, gradient, Hessian),
-// write CSV or an ESRI ASCII grid. Instantiated for double and for exact rationals.
+// write CSV, an ESRI ASCII grid or a GeoTIFF. Instantiated for double and for exact rationals.
 
 #include "eval_job.h"
 #include "cli.h"
 #include "files.h"
+#include "geotiff.h"
+#include "point_input.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
@@ -176,21 +178,33 @@ void run(const Eval_job& job, std::ostream& out) {
   // Queries first: a bad query file leaves no half-written output behind.
   std::vector<Point_2> points;
   if (!job.use_grid) {
-    std::ifstream query_file = open_input(job.query);
-    points = TS::read_query_points<K>(query_file, job.query);
+    points = read_query_file<K>(job.query);
   }
 
   const bool to_stdout = job.output == "-";
-  const bool ascii_grid = job.use_grid && lowercase_extension(job.output) == "asc";
+  const std::string extension = lowercase_extension(job.output);
+  const bool ascii_grid = job.use_grid && extension == "asc";
+  const bool geotiff = job.use_grid && (extension == "tif" || extension == "tiff");
+  // GeoTIFF: one float64 band per output column (z; zx, zy; zxx, zxy, zyy)
+  std::vector<std::string> bands{"z"};
+  if (job.derivatives >= 1)
+    bands.insert(bands.end(), {"zx", "zy"});
+  if (job.derivatives >= 2)
+    bands.insert(bands.end(), {"zxx", "zxy", "zyy"});
+  std::optional<Geotiff_writer> tiff;
+  if (geotiff) {
+    const auto [dx, dy] = geotiff_pixel_size(job.grid);
+    tiff.emplace(job.output, job.grid.nx, job.grid.ny, bands, job.grid.xmin, job.grid.ymax, dx, dy);
+  }
   std::ofstream file;
-  if (!to_stdout)
+  if (!to_stdout && !geotiff)
     file = open_output(job.output);
   std::ostream& output = to_stdout ? std::cout : file;
   const std::string name = to_stdout ? std::string("stdout") : job.output;
 
   double evaluate_seconds = 0;
   std::string text;
-  if (!ascii_grid) {
+  if (!ascii_grid && !geotiff) {
     text = "x,y,z";
     if (job.derivatives >= 1)
       text += ",zx,zy";
@@ -222,14 +236,14 @@ void run(const Eval_job& job, std::ostream& out) {
       append_number(text, cellsize);
       text += "\nNODATA_value -9999\n";
     }
-    // CSV rows go south to north; ESRI grids list rows from north to south.
+    // CSV rows go south to north; ESRI grids and GeoTIFF list rows from north to south.
     const long long rows_per_chunk = (std::max)(1LL, static_cast<long long>(chunk_size) / g.nx);
     std::vector<Point_2> chunk;
     for (long long first = 0; first < g.ny; first += rows_per_chunk) {
       const long long last = (std::min)(g.ny, first + rows_per_chunk);
       chunk.clear();
       for (long long r = first; r < last; ++r) {
-        const long long j = ascii_grid ? g.ny - 1 - r : r;
+        const long long j = ascii_grid || geotiff ? g.ny - 1 - r : r;
         const double y = node(g.ymin, g.ymax, j, g.ny);
         for (long long i = 0; i < g.nx; ++i)
           chunk.emplace_back(node(g.xmin, g.xmax, i, g.nx), y);
@@ -237,6 +251,20 @@ void run(const Eval_job& job, std::ostream& out) {
       Stopwatch timer;
       const auto jets = evaluator.evaluate(chunk);
       evaluate_seconds += timer.lap();
+      if (geotiff) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        std::vector<std::vector<double>> values(bands.size(), std::vector<double>(chunk.size()));
+        for (std::size_t q = 0; q < chunk.size(); ++q) {
+          const auto& jet = jets[q];
+          values[0][q] = jet ? nearest_double(jet->value) : nan;
+          for (std::size_t i = 0; i < 2 && job.derivatives >= 1; ++i)
+            values[1 + i][q] = jet ? nearest_double(jet->gradient[i]) : nan;
+          for (std::size_t i = 0; i < 3 && job.derivatives >= 2; ++i)
+            values[3 + i][q] = jet ? nearest_double(jet->hessian[i]) : nan;
+        }
+        tiff->write_rows(first, last - first, values);
+        continue;
+      }
       if (ascii_grid) {
         for (std::size_t q = 0; q < chunk.size(); ++q) {
           if (jets[q])
@@ -252,10 +280,14 @@ void run(const Eval_job& job, std::ostream& out) {
       text.clear();
     }
   }
-  write_text(output, text, name);
-  output.flush();
-  if (!output)
-    throw std::runtime_error("cannot write '" + name + "'");
+  if (geotiff) {
+    tiff->close();
+  } else {
+    write_text(output, text, name);
+    output.flush();
+    if (!output)
+      throw std::runtime_error("cannot write '" + name + "'");
+  }
 
   if (to_stdout)
     return; // stdout holds the data only
@@ -271,8 +303,10 @@ void run(const Eval_job& job, std::ostream& out) {
   if (evaluate_seconds > 0)
     summary << " (" << double(c.points) / evaluate_seconds << " points/s)";
   summary << "\nwrote " << job.output << " ("
-          << (ascii_grid ? "ESRI ASCII grid"
-                         : "CSV, derivatives " + std::to_string(job.derivatives))
+          << (ascii_grid ? std::string("ESRI ASCII grid")
+              : geotiff  ? "GeoTIFF, " + std::to_string(bands.size()) + " float64 band" +
+                              (bands.size() > 1 ? "s" : "")
+                        : "CSV, derivatives " + std::to_string(job.derivatives))
           << ")\n";
   out << summary.str();
 }
@@ -294,6 +328,16 @@ double ascii_grid_cellsize(const Eval_grid& g) {
     throw Usage_error(message.str());
   }
   return dx > 0 ? dx : dy;
+}
+
+std::pair<double, double> geotiff_pixel_size(const Eval_grid& g) {
+  const double dx = g.nx > 1 ? (g.xmax - g.xmin) / double(g.nx - 1) : 0;
+  const double dy = g.ny > 1 ? (g.ymax - g.ymin) / double(g.ny - 1) : 0;
+  if (dx == 0 && dy == 0)
+    throw Usage_error("a GeoTIFF needs NX > 1 or NY > 1 (its pixel size comes from the node "
+                      "spacing)");
+  // one row or one column: square pixels
+  return {dx > 0 ? dx : dy, dy > 0 ? dy : dx};
 }
 
 void run_eval_job(const Eval_job& job, std::ostream& out) {

@@ -6,6 +6,7 @@
 
 #include <ostream>
 #include <string>
+#include <utility>
 
 namespace tspline {
 
@@ -23,7 +24,7 @@ struct Eval_job {
   int derivatives = 0;         // 0: z; 1: z, zx, zy; 2: and zxx, zxy, zyy
   std::string outside = "nan"; // nan | nearest | linear
   bool exact = false;          // read and evaluate in exact rationals
-  std::string output;          // CSV, '-' for stdout, or .asc (grid only)
+  std::string output;          // CSV, '-' for stdout, or .asc / .tif (grid only)
 };
 
 // Reads the spline, evaluates, writes the output and (unless the output is stdout) prints a
@@ -33,6 +34,10 @@ void run_eval_job(const Eval_job& job, std::ostream& out);
 // The grid's cell size for an ESRI ASCII grid; throws Usage_error when the cells are not
 // square (the format has one cellsize) or undefined (a 1 x 1 grid).
 double ascii_grid_cellsize(const Eval_grid& grid);
+
+// The pixel width and height of a GeoTIFF of the grid (the node spacing; square where the grid
+// has one row or column); throws Usage_error for a 1 x 1 grid.
+std::pair<double, double> geotiff_pixel_size(const Eval_grid& grid);
 
 } // namespace tspline
 

@@ -5,6 +5,7 @@
 #include "report.h"
 #include "files.h"
 #include "mesh_output.h"
+#include "point_input.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
@@ -192,11 +193,16 @@ struct Input {
 };
 
 template <class K>
-Input<K> read_input(const std::string& path) {
+Input<K> read_input(const std::string& path, const std::string& columns) {
   const std::string ext = lowercase_extension(path);
-  if (ext == "xyz" || ext == "txt") {
-    std::ifstream in = open_input(path);
-    const TS::Scattered_data<K> data = TS::read_xyz<K>(in, path);
+  if (ext == "xyz" || ext == "txt" || ext == "npy") {
+    TS::Scattered_data<K> data;
+    if (ext == "npy") {
+      data = read_npy_scattered<K>(path, columns, false);
+    } else {
+      std::ifstream in = open_input(path);
+      data = TS::read_xyz<K>(in, path);
+    }
     auto [domain, values] = TS::delaunay_domain(data);
     return {std::move(domain), std::move(values), "scattered points, Delaunay triangulation"};
   }
@@ -205,7 +211,8 @@ Input<K> read_input(const std::string& path) {
     return {std::move(domain), std::move(values), "triangle mesh, (x, y) as the domain"};
   }
   throw TS::Invalid_input("'" + path + "': unknown input format '." + ext +
-                          "' (expected .xyz for scattered points, or .off/.obj/.ply/.stl)");
+                          "' (expected .xyz or .npy for scattered points, or "
+                          ".off/.obj/.ply/.stl)");
 }
 
 template <class K>
@@ -213,7 +220,7 @@ Job_result mann(const Mann_job& job, std::ostream& out) {
   using FT = typename K::FT;
   Stopwatch clock, total;
   Json timings = Json::object();
-  Input<K> input = read_input<K>(job.input);
+  Input<K> input = read_input<K>(job.input, job.columns);
   timings["read_and_triangulate"] = clock.lap();
   const TS::Planar_domain<K>& domain = input.domain;
 

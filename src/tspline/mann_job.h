@@ -28,13 +28,14 @@ struct Job_result {
 Job_result run_adjust_job(const Adjust_job& job, std::ostream& out);
 
 struct Mann_job {
-  std::string input;  // .xyz scattered data or a mesh (OFF/OBJ/PLY/STL)
-  int degree = 5;     // patch degree n; the continuity is floor((n-1)/4)
-  bool exact = false; // exact rational arithmetic (the C^1 certificate is a proof)
-  std::string report; // JSON report path
-  std::string mesh;   // tessellated mesh path (.ply/.off/.obj)
-  int levels = 3;     // 4-split levels of the tessellation
-  std::string save;   // .spline path
+  std::string input;   // .xyz or .npy scattered data or a mesh (OFF/OBJ/PLY/STL)
+  std::string columns; // .npy: the indices of the x,y,z columns; empty: an (n, 3) array
+  int degree = 5;      // patch degree n; the continuity is floor((n-1)/4)
+  bool exact = false;  // exact rational arithmetic (the C^1 certificate is a proof)
+  std::string report;  // JSON report path
+  std::string mesh;    // tessellated mesh path (.ply/.off/.obj)
+  int levels = 3;      // 4-split levels of the tessellation
+  std::string save;    // .spline path
 };
 
 // Estimates vertex derivatives, builds Mann's interpolant, certifies it, writes the

@@ -8,6 +8,7 @@
 #include <CGAL/Triangular_spline/Domain/constrained_domain.h>
 #include <CGAL/Triangular_spline/Domain/demo_data.h>
 #include <CGAL/Triangular_spline/IO/mesh_io.h>
+#include <CGAL/Triangular_spline/IO/npy.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
@@ -19,10 +20,12 @@
 #include <chrono>
 #include <cstdint>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <initializer_list>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <sstream>
@@ -1252,4 +1255,265 @@ TYPED_TEST(MeshDomain, RejectsHeadersThatBypassTheChecks) {
       dir.write("named.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty int y x\n");
   // (refused since at the header: a property line has three words)
   EXPECT_TRUE(throws_with(read(named), {named + ":4:", "invalid PLY header line"}));
+}
+
+// ---------------------------------------------------------------------------------------
+// NumPy .npy arrays (issue 15)
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+// The bytes np.save writes: magic, version, header length, the dict padded to a multiple of
+// 64 bytes with spaces and a newline, then the data.
+std::string npy_bytes(const std::string& descr, const std::string& shape, bool fortran,
+                      const std::string& data, int version = 1) {
+  std::string dict = "{'descr': '" + descr + "', 'fortran_order': " + (fortran ? "True" : "False") +
+                     ", 'shape': " + shape + ", }";
+  const std::size_t preamble = version == 1 ? 10 : 12;
+  dict.append(64 - (preamble + dict.size() + 1) % 64, ' ');
+  dict += '\n';
+  std::string out = "\x93NUMPY";
+  out += static_cast<char>(version);
+  out += '\0';
+  const std::size_t n = dict.size();
+  out += static_cast<char>(n & 0xff);
+  out += static_cast<char>((n >> 8) & 0xff);
+  if (version != 1) {
+    out += static_cast<char>((n >> 16) & 0xff);
+    out += static_cast<char>((n >> 24) & 0xff);
+  }
+  return out + dict + data;
+}
+
+template <class T>
+std::string raw_bytes(std::initializer_list<T> values) {
+  std::string out;
+  for (T v : values) {
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    out.append(reinterpret_cast<const char*>(b), sizeof(T)); // the test hosts are little-endian
+  }
+  return out;
+}
+
+TS::Npy_array read_npy_text(const std::string& bytes, const std::string& name = "a.npy") {
+  std::istringstream in(bytes);
+  return TS::read_npy(in, name);
+}
+
+// A stream that cannot seek (a pipe): the reader cannot know the size in advance.
+class Unseekable_buffer : public std::stringbuf {
+public:
+  explicit Unseekable_buffer(const std::string& s) : std::stringbuf(s) {}
+
+protected:
+  pos_type seekoff(off_type, std::ios_base::seekdir, std::ios_base::openmode) override {
+    return pos_type(off_type(-1));
+  }
+  pos_type seekpos(pos_type, std::ios_base::openmode) override { return pos_type(off_type(-1)); }
+};
+
+} // namespace
+
+TEST(Npy, ReadsEveryVersionTypeAndOrder) {
+  // The array [[1, 2, 3], [4, 5, 6]] in every supported encoding.
+  const std::vector<double> expected{1, 2, 3, 4, 5, 6};
+  const std::string c_f8 = raw_bytes<double>({1, 2, 3, 4, 5, 6});
+  const std::string f_f8 = raw_bytes<double>({1, 4, 2, 5, 3, 6}); // column after column
+  for (int version : {1, 2, 3}) {
+    const TS::Npy_array a = read_npy_text(npy_bytes("<f8", "(2, 3)", false, c_f8, version));
+    EXPECT_EQ(a.rows, 2u);
+    EXPECT_EQ(a.columns, 3u);
+    EXPECT_EQ(a.dtype, "<f8");
+    EXPECT_EQ(a.values, expected) << "version " << version;
+  }
+  EXPECT_EQ(read_npy_text(npy_bytes("<f8", "(2, 3)", true, f_f8)).values, expected);
+  EXPECT_EQ(
+      read_npy_text(npy_bytes("<f4", "(2, 3)", false, raw_bytes<float>({1, 2, 3, 4, 5, 6}))).values,
+      expected);
+  EXPECT_EQ(
+      read_npy_text(npy_bytes("<i4", "(2, 3)", true, raw_bytes<std::int32_t>({1, 4, 2, 5, 3, 6})))
+          .values,
+      expected);
+  EXPECT_EQ(
+      read_npy_text(npy_bytes("<i8", "(2, 3)", false, raw_bytes<std::int64_t>({1, 2, 3, 4, 5, 6})))
+          .values,
+      expected);
+  // float32 values are widened exactly; negative integers keep their sign
+  const TS::Npy_array f4 =
+      read_npy_text(npy_bytes("<f4", "(1, 2)", false, raw_bytes<float>({0.1f, -3.5f})));
+  EXPECT_EQ(f4.values[0], static_cast<double>(0.1f));
+  EXPECT_EQ(
+      read_npy_text(npy_bytes("<i4", "(1, 1)", false, raw_bytes<std::int32_t>({-7}))).values[0],
+      -7.0);
+  // what a pipe gives: read in blocks, same result
+  Unseekable_buffer pipe(npy_bytes("<f8", "(2, 3)", true, f_f8));
+  std::istream in(&pipe);
+  EXPECT_EQ(TS::read_npy(in, "pipe.npy").values, expected);
+  // the header's keys in any order, double quotes, no trailing comma
+  const std::string dict = "{\"shape\": (2,3), \"fortran_order\": False, \"descr\": \"<f8\"}\n";
+  std::string v1 = "\x93NUMPY\x01";
+  v1 += '\0';
+  v1 += static_cast<char>(dict.size());
+  v1 += '\0';
+  EXPECT_EQ(read_npy_text(v1 + dict + c_f8).values, expected);
+}
+
+TEST(Npy, RejectsBadFilesWithOneLine) {
+  const std::string six = raw_bytes<double>({1, 2, 3, 4, 5, 6});
+  auto read = [](const std::string& bytes) { return [bytes] { read_npy_text(bytes, "x.npy"); }; };
+  EXPECT_TRUE(throws_with(read(""), {"x.npy: not a readable .npy file: bad magic string"}));
+  EXPECT_TRUE(throws_with(read("x y z\n0 0 1\n"), {"bad magic string"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes("<f8", "(2, 3)", false, six, 4)), {"format version 4.0"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes("<f8", "(2, 3)", false, six).substr(0, 30)),
+                          {"truncated header"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes(">f8", "(2, 3)", false, six)),
+                          {"big-endian dtype '>f8'", "astype('<f8')"}));
+  EXPECT_TRUE(
+      throws_with(read(npy_bytes("<c16", "(2, 3)", false, six)), {"unsupported dtype '<c16'"}));
+  EXPECT_TRUE(
+      throws_with(read(npy_bytes("|u1", "(2, 3)", false, six)), {"unsupported dtype '|u1'"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes("<f8", "(6,)", false, six)),
+                          {"shape (6,) is not two-dimensional"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes("<f8", "(1, 2, 3)", false, six)),
+                          {"shape (1, 2, 3) is not two-dimensional"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes("<f8", "(2, 3)", false, six.substr(0, 40))),
+                          {"truncated data: shape (2, 3) of '<f8' needs 48 bytes, the file holds "
+                           "only 40 after the header"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes("<f8", "(2, 3)", false, six + "xx")),
+                          {"2 bytes after the data of shape (2, 3)"}));
+  // shapes whose byte count overflows, and dimensions that overflow while parsed
+  EXPECT_TRUE(throws_with(read(npy_bytes("<f8", "(4611686018427387904, 4)", false, six)),
+                          {"shape (4611686018427387904, 4) is too large"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes("<f8", "(99999999999999999999999, 3)", false, six)),
+                          {"the shape's dimensions are too large"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes("<f8", "(2, -3)", false, six)),
+                          {"tuple of non-negative integers"}));
+  EXPECT_TRUE(throws_with(read(npy_bytes("<i8", "(1, 1)", false,
+                                         raw_bytes<std::int64_t>({(std::int64_t(1) << 53) + 1}))),
+                          {"integer 9007199254740993 at element 0 is not exactly a double"}));
+  EXPECT_TRUE(throws_with(
+      read(npy_bytes("<i8", "(1, 2)", false,
+                     raw_bytes<std::int64_t>({0, std::numeric_limits<std::int64_t>::min()}))),
+      {"integer -9223372036854775808 at element 1"}));
+  // header grammar: unknown keys, structured dtypes, missing keys, oversized headers
+  std::string extra = npy_bytes("<f8", "(2, 3)", false, six);
+  extra.replace(extra.find("'shape'"), 7, "'shapes'");
+  EXPECT_TRUE(throws_with(read(extra), {"unexpected key 'shapes'"}));
+  std::string structured = "{'descr': [('x', '<f8')], 'fortran_order': False, 'shape': (2,), }\n";
+  EXPECT_TRUE(throws_with(read(std::string("\x93NUMPY\x01", 7) + '\0' +
+                               static_cast<char>(structured.size()) + '\0' + structured + six),
+                          {"structured arrays are not read"}));
+  std::string missing = "{'descr': '<f8', 'shape': (2, 3), }\n";
+  EXPECT_TRUE(throws_with(read(std::string("\x93NUMPY\x01", 7) + '\0' +
+                               static_cast<char>(missing.size()) + '\0' + missing + six),
+                          {"it needs 'descr', 'fortran_order' and 'shape'"}));
+  EXPECT_TRUE(throws_with(read(std::string("\x93NUMPY\x02", 7) + '\0' + "\xff\xff\xff\x7f"),
+                          {"header of 2147483647 bytes"}));
+}
+
+TEST(Npy, HugeShapeInATinyFileAllocatesNothing) {
+  // 10^12 rows announced, 96 bytes present: refused from the file size before any allocation
+  // (np.load tries to allocate 21.8 TiB), and through a pipe after reading what is there.
+  const std::string huge = std::string(TSPLINE_BAD_DATA_DIR) + "/npy_huge_shape.npy";
+  std::ifstream file(huge, std::ios::binary);
+  EXPECT_TRUE(throws_with([&] { TS::read_npy(file, huge); },
+                          {huge + ": not a readable .npy file: truncated data: shape "
+                                  "(1000000000000, 3) of '<f8' needs 24000000000000 bytes, "
+                                  "the file holds only 96 after the header"}));
+  Unseekable_buffer pipe(
+      npy_bytes("<f8", "(1000000000000, 3)", false, raw_bytes<double>({1, 2, 3, 4, 5, 6})));
+  std::istream in(&pipe);
+  EXPECT_TRUE(throws_with([&] { TS::read_npy(in, "pipe.npy"); },
+                          {"needs 24000000000000 bytes, the data end after 48"}));
+}
+
+TEST(Npy, BadFilesOfTheRepository) {
+  const std::string bad = TSPLINE_BAD_DATA_DIR;
+  auto read = [](const std::string& path) {
+    return [path] {
+      std::ifstream in(path, std::ios::binary);
+      const TS::Npy_array a = TS::read_npy(in, path);
+      TS::scattered_data_from_npy<Epick>(a, path, {0, 1, 2});
+    };
+  };
+  EXPECT_TRUE(throws_with(read(bad + "/npy_bad_magic.npy"), {"bad magic string"}));
+  EXPECT_TRUE(
+      throws_with(read(bad + "/npy_truncated.npy"), {"needs 96 bytes, the file holds only 50"}));
+  EXPECT_TRUE(throws_with(read(bad + "/npy_big_endian.npy"), {"big-endian dtype '>f8'"}));
+  EXPECT_TRUE(throws_with(read(bad + "/npy_one_dimensional.npy"), {"shape (12,)"}));
+  EXPECT_TRUE(throws_with(read(bad + "/npy_nan.npy"),
+                          {bad + "/npy_nan.npy: row 2, column 1: NaN is not a coordinate"}));
+}
+
+TYPED_TEST(ScatteredData, FromNpyColumnsAsReadXyzChecks) {
+  using K = TypeParam;
+  using FT = typename K::FT;
+  // columns: id, z, x, y (as a GIS export might have them)
+  TS::Npy_array a;
+  a.rows = 5;
+  a.columns = 4;
+  a.values = {7, 1, 0, 0, 8, 2, 1, 0, 9, 3, 0, 1, 10, 4, 1, 1, 11, 0.1, 0.5, 0.25};
+  const TS::Scattered_data<K> data = TS::scattered_data_from_npy<K>(a, "a.npy", {2, 3, 1});
+  ASSERT_EQ(data.points.size(), 5u);
+  EXPECT_EQ(data.points[4], typename K::Point_2(FT(0.5), FT(0.25)));
+  EXPECT_EQ(data.values[4], FT(0.1)); // the double 0.1, exactly (not 1/10)
+  EXPECT_TRUE(data.gradients.empty());
+  const TS::Scattered_data<K> g = TS::scattered_data_from_npy<K>(a, "a.npy", {2, 3, 1, 0, 0});
+  ASSERT_EQ(g.gradients.size(), 5u);
+  EXPECT_EQ(g.gradients[1][0], FT(8));
+  // the checks of read_xyz(), rows numbered from 0
+  TS::Npy_array dup = a;
+  dup.values[4 * 4 + 2] = 1; // row 4 at (1, 0.25)...
+  dup.values[4 * 4 + 3] = 0; // ... (1, 0), as row 1, with another height
+  EXPECT_TRUE(throws_with(
+      [&] {
+        TS::scattered_data_from_npy<K>(dup, "d.npy", {2, 3, 1});
+      },
+      {"d.npy: row 1 and d.npy: row 4: the same point", "different heights"}));
+  TS::Npy_array same = dup;
+  same.values[4 * 4 + 1] = 2; // the same height: merged
+  EXPECT_EQ(TS::scattered_data_from_npy<K>(same, "s.npy", {2, 3, 1}).merged_duplicates, 1u);
+  TS::Npy_array inf = a;
+  inf.values[3 * 4 + 2] = -std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(throws_with(
+      [&] {
+        TS::scattered_data_from_npy<K>(inf, "i.npy", {2, 3, 1});
+      },
+      {"i.npy: row 3, column 2: infinity is not a coordinate"}));
+  TS::Npy_array large = a;
+  large.values[1] = 1e200;
+  EXPECT_TRUE(throws_with(
+      [&] {
+        TS::scattered_data_from_npy<K>(large, "l.npy", {2, 3, 1});
+      },
+      {"row 0, column 1: magnitude above 1e150"}));
+  EXPECT_TRUE(throws_with(
+      [&] {
+        TS::scattered_data_from_npy<K>(a, "a.npy", {2, 3, 4});
+      },
+      {"no column 4 in an array of shape (5, 4)"}));
+  EXPECT_TRUE(throws_with(
+      [&] {
+        TS::scattered_data_from_npy<K>(a, "a.npy", {2, 3});
+      },
+      {"3 columns (x, y, z) or 5"}));
+  TS::Npy_array line = a;
+  line.rows = 2;
+  line.values.resize(8);
+  EXPECT_TRUE(throws_with(
+      [&] {
+        TS::scattered_data_from_npy<K>(line, "t.npy", {2, 3, 1});
+      },
+      {"t.npy: 2 distinct points"}));
+  // query points: the first two columns
+  const auto q = TS::query_points_from_npy<K>(a, "q.npy");
+  ASSERT_EQ(q.size(), 5u);
+  EXPECT_EQ(q[1], typename K::Point_2(8, 2));
+  TS::Npy_array one;
+  one.rows = 1;
+  one.columns = 1;
+  one.values = {0};
+  EXPECT_TRUE(throws_with([&] { TS::query_points_from_npy<K>(one, "q.npy"); },
+                          {"query points need 2 columns"}));
 }
