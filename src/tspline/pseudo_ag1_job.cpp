@@ -171,10 +171,14 @@ Json solve_ag1_system(const Pseudo_ag1_job& job,
   r["inadmissible_edges"] = walk.inadmissible_edges;
   r["non_convex_edges"] = walk.non_convex_edges;
   r["degenerate_frame_edges"] = walk.degenerate_frame_edges;
-  auto number = [](const FT& x) {
-    std::ostringstream s;
-    s << x; // exact rationals print as p/q
-    return s.str();
+  auto number = [](const FT& x) -> Json {
+    if constexpr (!CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
+      return CGAL::to_double(x); // every digit, as a JSON number
+    } else {
+      std::ostringstream s;
+      s << x; // exact rationals as "p/q", without rounding
+      return s.str();
+    }
   };
   Json relations = Json::array();
   for (auto e : mesh.edges()) {
