@@ -59,6 +59,28 @@ for method in least normals; do
     --view -35,20 --size 360x270 --output "$fig/fang_ellipsoid_low_$method.png" >/dev/null
 done
 
+# Fang §5.4, Figs. 5.8-5.13: his improved (open-set) blend with d = 0, 1, 2 and Nielson's
+# side-vertex interpolant of the same ellipsoid and perturbed meshes, shaded, Gaussian
+# curvature (colours saturating at |K| = 2 for all eight surfaces) and isophotes.
+for shape in ellipsoid perturbed; do
+  for method in d0 d1 d2 nielson; do
+    if [[ $method == nielson ]]; then
+      scheme=(--scheme nielson)
+    else
+      scheme=(--order "${method#d}")
+    fi
+    "$tspline" blend --shape $shape "${scheme[@]}" --resolution 16 \
+      --output "$work/fn_${shape}_$method.ply" >/dev/null
+    for mode in shaded curvature isophotes; do
+      extra=()
+      [[ $mode == curvature ]] && extra=(--range 2)
+      "$tspline" render --input "$work/fn_${shape}_$method.ply" --mode $mode "${extra[@]}" \
+        --view -35,20 --size 360x270 --output "$fig/fang_nielson_${shape}_${method}_$mode.png" \
+        >/dev/null
+    done
+  done
+done
+
 # Xu's pseudo-AG^1 surfaces over closed meshes (manual, AG1.md §6 "Pictures"): the control net
 # of the exact tetrahedron in the colours of Xu's Fig. 6.9, isophotes of the icosahedron (the
 # bands kink where the tangent planes jump), the torus's edges coloured by their largest normal

@@ -33,6 +33,10 @@ int run_blend(const std::vector<std::string>& args) {
   cl.text(job.shape, "shape", "NAME", "a test mesh of ch. 8 instead of --input");
   cl.integer(job.seed, "seed", "N", "seed of the random test meshes (perturbed, mixed)", 0,
              4294967295LL);
+  cl.text(job.scheme, "scheme", "S",
+          "fang (the default) or nielson: Nielson's G^1 side-vertex interpolant (1987) of "
+          "the same vertices and normals, Fang's comparator in §5.4 (triangle meshes; "
+          "--order, --variant and the vertex surfaces do not apply)");
   cl.integer(job.order, "order", "d", "blending order: derivatives up to d are inherited", 0, 20,
              " (the blending order d >= 0)");
   cl.text(job.variant, "variant", "V",
@@ -58,6 +62,8 @@ int run_blend(const std::vector<std::string>& args) {
     return 0;
   if (job.input.empty() == job.shape.empty())
     throw Usage_error("give exactly one of --input MESH and --shape NAME");
+  if (job.scheme != "fang" && job.scheme != "nielson")
+    throw Usage_error("--scheme must be fang or nielson");
   if (job.variant != "basic" && job.variant != "vertex" && job.variant != "open")
     throw Usage_error("--variant must be basic, vertex or open");
   if (job.vertex_surface != "least" && job.vertex_surface != "lsq" &&

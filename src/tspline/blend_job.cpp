@@ -12,7 +12,10 @@
 #include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
 #include <CGAL/Triangular_spline/Blending/blending_continuity.h>
+#include <CGAL/Triangular_spline/Blending/blending_sampler.h>
 #include <CGAL/Triangular_spline/Blending/test_meshes.h>
+#include <CGAL/Triangular_spline/Comparators/Nielson_side_vertex.h>
+#include <CGAL/Triangular_spline/closed_surface.h>
 #include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/Triangular_spline/tessellate.h>
 
@@ -109,6 +112,173 @@ std::string join(const std::vector<double>& v) {
   return s.str();
 }
 
+// Jumps across the interior edges of a piecewise surface (closed or not): of the normal
+// (degrees) and of the Gaussian curvature, which a G^1 (or C^1) surface does not control.
+struct Edge_jumps {
+  std::size_t edges = 0;
+  double max_normal_deg = 0, mean_normal_deg = 0, max_gaussian = 0, mean_gaussian = 0;
+};
+
+template <class Sampler>
+Edge_jumps measure_edge_jumps(const Mesh& mesh, const Sampler& sampler, int samples) {
+  Edge_jumps j;
+  std::size_t count = 0;
+  for (Mesh::Edge_index e : mesh.edges()) {
+    if (mesh.is_border(e))
+      continue;
+    ++j.edges;
+    const Mesh::Halfedge_index h = mesh.halfedge(e), o = mesh.opposite(h);
+    for (int k = 1; k <= samples; ++k) {
+      const double t = double(k) / double(samples + 1);
+      const TS::Surface_sample a =
+          sampler(mesh.face(h), TS::internal::weights_on_halfedge(mesh, h, t));
+      const TS::Surface_sample b =
+          sampler(mesh.face(o), TS::internal::weights_on_halfedge(mesh, o, 1 - t));
+      const double normal =
+          a.regular && b.regular ? TS::internal::closed_angle_deg(a.normal, b.normal) : 180;
+      const double gaussian = std::abs(a.gaussian - b.gaussian);
+      j.max_normal_deg = std::max(j.max_normal_deg, normal);
+      j.mean_normal_deg += normal;
+      if (std::isfinite(gaussian)) {
+        j.max_gaussian = std::max(j.max_gaussian, gaussian);
+        j.mean_gaussian += gaussian;
+      }
+      ++count;
+    }
+  }
+  if (count > 0) {
+    j.mean_normal_deg /= double(count);
+    j.mean_gaussian /= double(count);
+  }
+  return j;
+}
+
+Json edge_jumps_json(const Edge_jumps& j, int samples) {
+  Json r = Json::object();
+  r["interior_edges"] = j.edges;
+  r["samples_per_edge"] = samples;
+  r["max_normal_deg"] = j.max_normal_deg;
+  r["mean_normal_deg"] = j.mean_normal_deg;
+  r["max_gaussian"] = j.max_gaussian;
+  r["mean_gaussian"] = j.mean_gaussian;
+  return r;
+}
+
+bool is_triangle_mesh(const Mesh& mesh) {
+  for (Mesh::Face_index f : mesh.faces())
+    if (CGAL::degree(f, mesh) != 3)
+      return false;
+  return true;
+}
+
+// The measures of closed_surface.h (on a tessellation of 4^levels triangles per face).
+Json closed_measures_json(const TS::Closed_surface_measures& m, int levels) {
+  Json r = Json::object();
+  r["levels"] = levels;
+  r["max_normal_jump_deg"] = m.max_jump_deg;
+  r["mean_normal_jump_deg"] = m.mean_jump_deg;
+  r["vertex_max_normal_jump_deg"] = m.vertex_max_jump_deg;
+  r["min_gaussian_curvature"] = m.gaussian_min;
+  r["max_gaussian_curvature"] = m.gaussian_max;
+  r["volume_ratio"] = m.volume_ratio;
+  r["hausdorff_rel"] = m.hausdorff_rel;
+  r["folded_samples"] = m.folded_samples;
+  r["singular_samples"] = m.singular_samples;
+  return r;
+}
+
+// --resolution N as a level of tessellate_closed_surface(): 2^levels >= N segments per edge.
+int levels_for(int resolution) {
+  int levels = 0;
+  while ((1 << levels) < resolution && levels < 8)
+    ++levels;
+  return levels;
+}
+
+std::string edge_jumps_text(const Edge_jumps& j) {
+  std::ostringstream s;
+  s << std::setprecision(3) << "  across interior edges: normal jump max " << j.max_normal_deg
+    << " deg, mean " << j.mean_normal_deg << " deg; Gaussian curvature jump max " << j.max_gaussian
+    << ", mean " << j.mean_gaussian << "\n";
+  return s.str();
+}
+
+// Nielson's side-vertex interpolant of the same mesh and normals (--scheme nielson).
+Json run_nielson(const Blend_job& job, const Mesh& mesh, const std::string& source,
+                 std::ostream& out, Json report, Json timings, Stopwatch& clock, Stopwatch& total) {
+  std::unique_ptr<TS::Nielson_side_vertex_surface<Point_3>> built;
+  try {
+    built = std::make_unique<TS::Nielson_side_vertex_surface<Point_3>>(mesh);
+  } catch (const TS::Invalid_input& e) {
+    throw TS::Invalid_input(source + ": " + e.what());
+  }
+  const TS::Nielson_side_vertex_surface<Point_3>& surface = *built;
+  const Mesh& m = surface.mesh();
+  timings["build"] = clock.lap();
+  const int levels = levels_for(job.resolution);
+  report["input"] = job.shape.empty() ? Json(job.input) : Json();
+  report["shape"] = job.shape.empty() ? Json() : Json(job.shape);
+  report["scheme"] = "nielson";
+  report["vertices"] = m.number_of_vertices();
+  report["edges"] = m.number_of_edges();
+  report["faces"] = m.number_of_faces();
+  report["normals"] = surface.has_estimated_normals() ? "estimated" : "given";
+  const Edge_jumps jumps = measure_edge_jumps(m, surface, job.samples);
+  report["edge_jumps"] = edge_jumps_json(jumps, job.samples);
+  report["max_normal_angle_jump_deg"] = jumps.max_normal_deg;
+  timings["measure_continuity"] = clock.lap();
+  std::string shape_text;
+  if (CGAL::is_closed(m)) {
+    const TS::Closed_surface_measures closed =
+        TS::measure_closed_surface(m, surface, job.samples, levels, false);
+    report["closed_measures"] = closed_measures_json(closed, levels);
+    report["min_gaussian_curvature"] = closed.gaussian_min;
+    report["max_gaussian_curvature"] = closed.gaussian_max;
+    std::ostringstream s;
+    s << std::setprecision(3) << "  Gaussian curvature in [" << closed.gaussian_min << ", "
+      << closed.gaussian_max << "] (" << (1 << levels)
+      << " segments per edge); normal jump at the vertices " << closed.vertex_max_jump_deg
+      << " deg; volume ratio " << closed.volume_ratio << "\n";
+    shape_text = s.str();
+    timings["measure_shape"] = clock.lap();
+  }
+  if (!job.mesh.empty()) {
+    const TS::Closed_tessellation t = TS::tessellate_closed_surface(m, surface, levels);
+    CGAL::Surface_mesh<Point_3> tm = t.mesh;
+    auto normal =
+        tm.add_property_map<Mesh::Vertex_index, Vector_3>("v:normal", Vector_3(0, 0, 0)).first;
+    auto gaussian =
+        tm.add_property_map<Mesh::Vertex_index, double>("v:gaussian_curvature", 0.).first;
+    for (Mesh::Vertex_index v : tm.vertices()) {
+      const auto& n = t.normals[std::size_t(v)];
+      normal[v] = Vector_3(n[0], n[1], n[2]);
+      gaussian[v] = t.gaussian[std::size_t(v)];
+    }
+    TS::write_mesh(job.mesh, tm);
+    Json o = Json::object();
+    o["path"] = job.mesh;
+    o["levels"] = levels;
+    o["vertices"] = tm.number_of_vertices();
+    o["faces"] = tm.number_of_faces();
+    report["mesh"] = o;
+    timings["tessellate_and_write"] = clock.lap();
+  }
+  timings["total"] = total.lap();
+  report["timings"] = timings;
+  out << "Nielson's side-vertex interpolant over " << source << "\n"
+      << "  mesh: " << m.number_of_vertices() << " vertices, " << m.number_of_edges() << " edges, "
+      << m.number_of_faces() << " triangles; normals "
+      << (surface.has_estimated_normals() ? "estimated from the faces" : "given") << "\n"
+      << "  PN boundary curves, cubic Hermite radial curves, Nielson's functions (Fang Def. 2.3)\n"
+      << edge_jumps_text(jumps) << shape_text;
+  if (!job.mesh.empty())
+    out << "  mesh: " << job.mesh << " (" << report["mesh"]["vertices"] << " vertices, "
+        << report["mesh"]["faces"] << " triangles)\n";
+  if (!job.report.empty())
+    write_json_report(job.report, report);
+  return report;
+}
+
 const char* variant_description(TS::Blending_variant v) {
   switch (v) {
   case TS::Blending_variant::BASIC:
@@ -150,6 +320,8 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
     source = job.input;
   }
   timings["read"] = clock.lap();
+  if (job.scheme == "nielson")
+    return run_nielson(job, mesh, source, out, report, timings, clock, total);
 
   TS::Mesh_blending_options options;
   options.order = job.order;
@@ -175,6 +347,20 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
   timings["measure_continuity"] = clock.lap();
   const TS::Blending_curvature curvature = TS::measure_blending_curvature(surface, job.resolution);
   timings["measure_curvature"] = clock.lap();
+  // the comparison with --scheme nielson: the same measures (triangle meshes)
+  Edge_jumps jumps;
+  const bool triangles = is_triangle_mesh(surface.mesh());
+  if (triangles) {
+    const TS::Mesh_blending_sampler<Point_3> sampler(surface);
+    jumps = measure_edge_jumps(surface.mesh(), sampler, job.samples);
+    report["edge_jumps"] = edge_jumps_json(jumps, job.samples);
+    if (CGAL::is_closed(surface.mesh())) {
+      const int levels = levels_for(job.resolution);
+      report["closed_measures"] = closed_measures_json(
+          TS::measure_closed_surface(surface.mesh(), sampler, job.samples, levels, false), levels);
+    }
+  }
+  timings["measure_jumps"] = clock.lap();
 
   std::map<std::size_t, std::size_t> sides;
   for (std::size_t f = 0; f < surface.number_of_faces(); ++f)
@@ -185,6 +371,7 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
 
   report["input"] = job.shape.empty() ? Json(job.input) : Json();
   report["shape"] = job.shape.empty() ? Json() : Json(job.shape);
+  report["scheme"] = "fang";
   report["order"] = job.order;
   report["variant"] = job.variant;
   report["vertex_surface"] = job.vertex_surface == "lsq"       ? "least_squares"
@@ -274,6 +461,8 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
       << "  Gaussian curvature in [" << curvature.min_gaussian << ", " << curvature.max_gaussian
       << "] (grid of " << job.resolution << " segments per edge); gap towards the vertices "
       << curvature.relative_vertex_gap[1] << " (relative, at 1e-3)\n";
+  if (triangles)
+    out << edge_jumps_text(jumps);
   if (!job.mesh.empty())
     out << "  mesh: " << job.mesh << " (" << tessellation.vertices << " vertices, "
         << tessellation.faces << " triangles)\n";

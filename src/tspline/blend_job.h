@@ -14,6 +14,7 @@ namespace tspline {
 struct Blend_job {
   std::string input;                    // a polygon mesh (.off/.ply/.obj/.stl); or
   std::string shape;                    // a test mesh of Fang ch. 8 (see --help)
+  std::string scheme = "fang";          // fang | nielson (the comparator of Fang §5.4)
   unsigned seed = 1;                    // for the random test meshes
   int order = 2;                        // the blending order d >= 0
   std::string variant = "open";         // basic | vertex | open

@@ -137,6 +137,77 @@ inline Blend_vec3 scaled3(const Blend_vec3& a, double s) {
   return {{a[0] * s, a[1] * s, a[2] * s}};
 }
 
+// A vertex's point in double.
+template <class Mesh>
+Blend_vec3 blend_point(const Mesh& mesh, typename Mesh::Vertex_index v) {
+  const auto& p = mesh.point(v);
+  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+
+// Newell's normal of a polygon: twice its vector area, exact for planar polygons.
+template <class Mesh>
+Blend_vec3 newell_normal(const Mesh& mesh, typename Mesh::Face_index f) {
+  Blend_vec3 n{{0, 0, 0}};
+  for (auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
+    const Blend_vec3 p = blend_point(mesh, mesh.source(h)), q = blend_point(mesh, mesh.target(h));
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+  return n;
+}
+
+// The unit vertex normals of the mesh blending constructions, by vertex index: the
+// property "v:normal" normalised if the mesh has one (it must agree with the orientation of
+// the faces), otherwise the normalised mean of the unit normals of the incident faces (Fang
+// §8.2). `estimated` tells which; `who` prefixes the error messages.
+template <class Mesh>
+std::vector<Blend_vec3> blending_vertex_normals(const Mesh& mesh, bool& estimated,
+                                                const std::string& who) {
+  using Vector_3 = typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel::Vector_3;
+  auto name = [](std::size_t v) { return "vertex " + std::to_string(v); };
+  const std::size_t V = mesh.number_of_vertices();
+  // the orientation reference: mean unit face normal
+  std::vector<Blend_vec3> sum(V, Blend_vec3{{0, 0, 0}});
+  for (auto f : mesh.faces()) {
+    Blend_vec3 n = newell_normal(mesh, f);
+    const double length = norm3(n);
+    if (!(length > 0))
+      throw Invalid_input(who + ": face " + std::to_string(static_cast<std::size_t>(f)) +
+                          " has zero area");
+    n = scaled3(n, 1 / length);
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      for (std::size_t c = 0; c < 3; ++c)
+        sum[static_cast<std::size_t>(v)][c] += n[c];
+  }
+  auto given = mesh.template property_map<typename Mesh::Vertex_index, Vector_3>("v:normal");
+  estimated = !given.second;
+  std::vector<Blend_vec3> normals(V, Blend_vec3{{0, 0, 1}});
+  for (auto vd : mesh.vertices()) {
+    const std::size_t v = static_cast<std::size_t>(vd);
+    const double le = norm3(sum[v]);
+    Blend_vec3 n = sum[v];
+    if (given.second) {
+      const Vector_3& g = get(given.first, vd);
+      n = {{CGAL::to_double(g.x()), CGAL::to_double(g.y()), CGAL::to_double(g.z())}};
+      const double length = norm3(n);
+      if (!std::isfinite(length) || !(length > 0))
+        throw Invalid_input(who + ": the normal of " + name(v) + " is zero or not finite");
+      n = scaled3(n, 1 / length);
+      if (le > 0 && !(dot3(n, sum[v]) > 0))
+        throw Invalid_input(who + ": the normal of " + name(v) +
+                            " points against the orientation of its faces");
+    } else {
+      if (!(le > 1e-12 * std::sqrt(double(CGAL::degree(vd, mesh)))))
+        throw Invalid_input(who + ": the estimated normal of " + name(v) +
+                            " vanishes (its face normals cancel)");
+      n = scaled3(n, 1 / le);
+    }
+    normals[v] = n;
+  }
+  return normals;
+}
+
 // An affine map of the plane: (a, b) -> (m0 a + m1 b + m2, m3 a + m4 b + m5).
 struct Affine_2 {
   std::array<double, 6> m{{1, 0, 0, 0, 1, 0}};
@@ -967,71 +1038,21 @@ private:
     }
   }
 
-  Vec3 point_of(vertex_descriptor v) const {
-    const Point_3& p = m_mesh.point(v);
-    return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-  }
-
-  Vec3 newell_normal(face_descriptor f) const {
-    Vec3 n{{0, 0, 0}};
-    for (auto h : CGAL::halfedges_around_face(m_mesh.halfedge(f), m_mesh)) {
-      const Vec3 p = point_of(m_mesh.source(h)), q = point_of(m_mesh.target(h));
-      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    return n;
-  }
-
   void compute_normals() {
     const std::size_t V = m_mesh.number_of_vertices();
     m_vertices.assign(V, Vertex_data());
     for (vertex_descriptor v : m_mesh.vertices()) {
-      const Vec3 p = point_of(v);
+      const Vec3 p = internal::blend_point(m_mesh, v);
       for (double x : p)
         if (!std::isfinite(x))
           throw Invalid_input("blending: " + vertex_name(static_cast<std::size_t>(v)) +
                               " has a coordinate that is not finite");
       m_vertices[static_cast<std::size_t>(v)].position = p;
     }
-    // the orientation reference: mean unit face normal
-    std::vector<Vec3> estimated(V, Vec3{{0, 0, 0}});
-    for (face_descriptor f : m_mesh.faces()) {
-      Vec3 n = newell_normal(f);
-      const double length = internal::norm3(n);
-      if (!(length > 0))
-        throw Invalid_input("blending: face " + std::to_string(static_cast<std::size_t>(f)) +
-                            " has zero area");
-      n = internal::scaled3(n, 1 / length);
-      for (vertex_descriptor v : CGAL::vertices_around_face(m_mesh.halfedge(f), m_mesh))
-        for (std::size_t c = 0; c < 3; ++c)
-          estimated[static_cast<std::size_t>(v)][c] += n[c];
-    }
-    auto given = m_mesh.template property_map<vertex_descriptor, Vector_3>("v:normal");
-    m_estimated_normals = !given.second;
-    for (vertex_descriptor vd : m_mesh.vertices()) {
-      const std::size_t v = static_cast<std::size_t>(vd);
-      const double le = internal::norm3(estimated[v]);
-      Vec3 n = estimated[v];
-      if (given.second) {
-        const Vector_3& g = get(given.first, vd);
-        n = {{CGAL::to_double(g.x()), CGAL::to_double(g.y()), CGAL::to_double(g.z())}};
-        const double length = internal::norm3(n);
-        if (!std::isfinite(length) || !(length > 0))
-          throw Invalid_input("blending: the normal of " + vertex_name(v) +
-                              " is zero or not finite");
-        n = internal::scaled3(n, 1 / length);
-        if (le > 0 && !(internal::dot3(n, estimated[v]) > 0))
-          throw Invalid_input("blending: the normal of " + vertex_name(v) +
-                              " points against the orientation of its faces");
-      } else {
-        if (!(le > 1e-12 * std::sqrt(double(CGAL::degree(vd, m_mesh)))))
-          throw Invalid_input("blending: the estimated normal of " + vertex_name(v) +
-                              " vanishes (its face normals cancel)");
-        n = internal::scaled3(n, 1 / le);
-      }
-      m_vertices[v].normal = n;
-    }
+    const std::vector<Vec3> normals =
+        internal::blending_vertex_normals(m_mesh, m_estimated_normals, "blending");
+    for (std::size_t v = 0; v < V; ++v)
+      m_vertices[v].normal = normals[v];
   }
 
   void build_vertices() {
