@@ -12,6 +12,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
+#include <CGAL/Triangular_spline/Blending/blending_sampler.h>
 #include <CGAL/Triangular_spline/Comparators/PN_triangles.h>
 #include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/Triangular_spline/IO/surface_file.h>
@@ -54,42 +55,6 @@ Input_mesh read_closed_mesh(const std::string& path) {
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return mesh;
 }
-
-// Fang's blend as a sampler of the closed-surface measures: face parameters from the
-// barycentric weights of the face's corners.
-class Blend_sampler {
-public:
-  Blend_sampler(const TS::Mesh_blending_surface<Epick::Point_3>& blend, const Input_mesh& mesh)
-      : m_blend(blend), m_mesh(mesh) {}
-  TS::Surface_sample operator()(Input_mesh::Face_index f, const std::array<double, 3>& w) const {
-    const auto h = m_mesh.halfedge(f);
-    const std::array<Input_mesh::Vertex_index, 3> corners{
-        {m_mesh.target(h), m_mesh.target(m_mesh.next(h)), m_mesh.source(h)}};
-    double a = 0, b = 0;
-    const std::size_t face = std::size_t(f);
-    for (std::size_t c = 0; c < 3; ++c) {
-      const std::size_t v = m_blend.face_vertex(face, c);
-      double weight = 0;
-      for (std::size_t k = 0; k < 3; ++k)
-        if (std::size_t(corners[k]) == v)
-          weight = w[k];
-      a += weight * m_blend.corner_parameter(face, c)[0];
-      b += weight * m_blend.corner_parameter(face, c)[1];
-    }
-    TS::Surface_sample s;
-    const auto p = m_blend.evaluate(f, a, b);
-    s.point = {{p.x(), p.y(), p.z()}};
-    const TS::Surface_curvature c = TS::surface_curvature(m_blend.derivatives(face, a, b));
-    s.normal = c.normal;
-    s.gaussian = c.gaussian;
-    s.regular = c.regular;
-    return s;
-  }
-
-private:
-  const TS::Mesh_blending_surface<Epick::Point_3>& m_blend;
-  const Input_mesh& m_mesh;
-};
 
 // PN triangles as a surface of patches (the sampler's interface).
 struct PN_surface {
@@ -567,7 +532,7 @@ Json run_pseudo_ag1_job(const Pseudo_ag1_job& given, std::ostream& out) {
       TS::Mesh_blending_options bo;
       bo.order = 1;
       const TS::Mesh_blending_surface<Epick::Point_3> blend(input, bo);
-      const Blend_sampler blend_sampler(blend, input);
+      const TS::Mesh_blending_sampler<Epick::Point_3> blend_sampler(blend);
       const auto fang_m =
           TS::measure_closed_surface(input, blend_sampler, job.samples, job.levels, check_self);
       comparison["fang_order1"] = measures_json(fang_m, check_self);
