@@ -100,17 +100,9 @@ Scene load_surface(const std::string& path, Mode mode, std::optional<int> levels
       TS::tessellate_closed_surface(input, sampler, scene.levels, split_normals);
   progress.end();
   scene.tessellation_seconds = seconds_since(start);
-  scene.mesh = std::move(t.mesh);
-  // The properties that to_render_mesh() and --ply read, as for a .spline.
-  auto normal =
-      scene.mesh.add_property_map<Surface_mesh::Vertex_index, K::Vector_3>("v:normal").first;
-  auto gaussian =
-      scene.mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:gaussian_curvature").first;
-  for (auto v : scene.mesh.vertices()) {
-    const auto& n = t.normals[std::size_t(v)];
-    normal[v] = K::Vector_3(n[0], n[1], n[2]); // zero where singular: the renderer falls back
-    gaussian[v] = t.gaussian[std::size_t(v)];  // NaN where singular: drawn grey
-  }
+  // the properties that to_render_mesh() and --ply read, as for a .spline: a zero normal
+  // where singular (the renderer falls back), NaN curvature (drawn grey)
+  scene.mesh = TS::tessellation_mesh(std::move(t));
 
   if (mode == Mode::Net) {
     // Xu's roles apply to the quintic nets of pseudo-AG^1; other degrees get role colours.

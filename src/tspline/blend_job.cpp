@@ -243,17 +243,8 @@ Json run_nielson(const Blend_job& job, const Mesh& mesh, const std::string& sour
     timings["measure_shape"] = clock.lap();
   }
   if (!job.mesh.empty()) {
-    const TS::Closed_tessellation t = TS::tessellate_closed_surface(m, surface, levels);
-    CGAL::Surface_mesh<Point_3> tm = t.mesh;
-    auto normal =
-        tm.add_property_map<Mesh::Vertex_index, Vector_3>("v:normal", Vector_3(0, 0, 0)).first;
-    auto gaussian =
-        tm.add_property_map<Mesh::Vertex_index, double>("v:gaussian_curvature", 0.).first;
-    for (Mesh::Vertex_index v : tm.vertices()) {
-      const auto& n = t.normals[std::size_t(v)];
-      normal[v] = Vector_3(n[0], n[1], n[2]);
-      gaussian[v] = t.gaussian[std::size_t(v)];
-    }
+    const CGAL::Surface_mesh<Point_3> tm =
+        TS::tessellation_mesh(TS::tessellate_closed_surface(m, surface, levels));
     TS::write_mesh(job.mesh, tm);
     Json o = Json::object();
     o["path"] = job.mesh;

@@ -318,19 +318,9 @@ Json build(const Pseudo_ag1_job& job, const Input_mesh& input, std::ostream& out
     report["saved"] = job.save;
   }
   if (!job.mesh.empty()) {
-    const TS::Closed_tessellation t =
-        TS::tessellate_closed_surface(surface.mesh(), sampler, job.mesh_levels, job.split_normals);
-    CGAL::Surface_mesh<Epick::Point_3> tm = t.mesh;
-    auto normal = tm.add_property_map<Input_mesh::Vertex_index, Epick::Vector_3>(
-                        "v:normal", Epick::Vector_3(0, 0, 0))
-                      .first;
-    auto gaussian =
-        tm.add_property_map<Input_mesh::Vertex_index, double>("v:gaussian_curvature", 0.).first;
-    for (auto v : tm.vertices()) {
-      const auto& n = t.normals[std::size_t(v)];
-      normal[v] = Epick::Vector_3(n[0], n[1], n[2]);
-      gaussian[v] = std::isfinite(t.gaussian[std::size_t(v)]) ? t.gaussian[std::size_t(v)] : 0.0;
-    }
+    const CGAL::Surface_mesh<Epick::Point_3> tm = TS::tessellation_mesh(
+        TS::tessellate_closed_surface(surface.mesh(), sampler, job.mesh_levels, job.split_normals),
+        true);
     TS::write_mesh(job.mesh, tm);
     Json o = Json::object();
     o["path"] = job.mesh;

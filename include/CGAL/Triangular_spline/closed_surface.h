@@ -198,6 +198,33 @@ Closed_tessellation tessellate_closed_surface(const Mesh& mesh, const Sampler& s
 
 /*!
   \ingroup PkgTriangularSplineCore
+  \brief moves the mesh out of a tessellation with its normals and Gaussian curvatures as the
+  vertex properties `"v:normal"` and `"v:gaussian_curvature"`, the ones `write_mesh()` writes
+  to PLY and `tspline render` reads.
+  \param t the tessellation (its mesh is moved out)
+  \param finite_curvature write 0 instead of NaN where the surface is singular (for files)
+  \returns the mesh with the two properties; a singular point's normal is zero
+*/
+inline CGAL::Surface_mesh<CGAL::Epick::Point_3> tessellation_mesh(Closed_tessellation&& t,
+                                                                  bool finite_curvature = false) {
+  using Mesh = CGAL::Surface_mesh<CGAL::Epick::Point_3>;
+  Mesh mesh = std::move(t.mesh);
+  auto normal = mesh.add_property_map<Mesh::Vertex_index, CGAL::Epick::Vector_3>("v:normal",
+                                                                                 CGAL::NULL_VECTOR)
+                    .first;
+  auto gaussian =
+      mesh.add_property_map<Mesh::Vertex_index, double>("v:gaussian_curvature", 0.).first;
+  for (auto v : mesh.vertices()) {
+    const auto& n = t.normals[std::size_t(v)];
+    normal[v] = CGAL::Epick::Vector_3(n[0], n[1], n[2]);
+    const double k = t.gaussian[std::size_t(v)];
+    gaussian[v] = finite_curvature && !std::isfinite(k) ? 0.0 : k;
+  }
+  return mesh;
+}
+
+/*!
+  \ingroup PkgTriangularSplineCore
   \brief how far a piecewise surface over a closed mesh is from tangent-plane continuity, and
   how far from its input (AG1.md §6, M1, M2, M5).
 */
