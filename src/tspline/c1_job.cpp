@@ -36,6 +36,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace tspline {
@@ -284,17 +285,22 @@ Json run(const C1_job& job, std::ostream& out) {
   double thin_plate = 0;
   double sampled_min = data_min, sampled_max = data_max;
   for (std::uint32_t f = 0; f < d.number_of_faces(); ++f) {
-    const auto& t = d.face(f);
     double energy = 0, z = 0;
-    const auto exact_patch = spline.patch(f);
+    const auto own = spline.patch(f);
     try {
-      const auto patch = TS::convert_patch<Fast>(exact_patch);
-      energy = TS::thin_plate_energy(patch);
-      z = patch.evaluate(CGAL::centroid(patch.vertex(0), patch.vertex(1), patch.vertex(2)));
+      if constexpr (std::is_same_v<K, Fast>) { // already in double: no copy
+        energy = TS::thin_plate_energy(own);
+        z = own.evaluate(CGAL::centroid(own.vertex(0), own.vertex(1), own.vertex(2)));
+      } else {
+        const auto patch = TS::convert_patch<Fast>(own);
+        energy = TS::thin_plate_energy(patch);
+        z = patch.evaluate(CGAL::centroid(patch.vertex(0), patch.vertex(1), patch.vertex(2)));
+      }
     } catch (const TS::Invalid_input&) {
-      energy = CGAL::to_double(TS::thin_plate_energy(exact_patch));
+      const auto exact = TS::convert_patch<Exact>(own);
+      energy = CGAL::to_double(TS::thin_plate_energy(exact));
       z = CGAL::to_double(
-          exact_patch.evaluate(CGAL::centroid(d.point(t[0]), d.point(t[1]), d.point(t[2]))));
+          exact.evaluate(CGAL::centroid(exact.vertex(0), exact.vertex(1), exact.vertex(2))));
     }
     thin_plate += energy;
     sampled_min = (std::min)(sampled_min, z);

@@ -10,8 +10,6 @@
 
 #include <CGAL/Algebraic_structure_traits.h>
 
-#include <Eigen/Dense>
-
 #include <boost/container/static_vector.hpp>
 
 #include <algorithm>
@@ -56,16 +54,18 @@ enum class Degree_selection {
 
   <b>Degree.</b> \f$d_v\f$ is the largest degree for which the fewest rings that hold
   at least 1.5 times as many points as the fit has unknowns (all rings if none does) give a
-  well-conditioned scaled, weighted design matrix (column-pivoted QR, smallest pivot at
-  least \f$10^{-6}\f$ of the largest). Sparse data, the boundary and points near a conic lower it,
-  down to 1 (a plane, two neighbours suffice) and 0 (a constant). The decision is taken in `double`
-  for every number type, so double and exact builds choose the same degrees; the
-  coefficients are then solved in `FT` (normal equations by exact elimination for exact
+  well-conditioned scaled, weighted design matrix (Householder QR with the columns ordered by
+  degree: every column at a distance from the span of the previous ones of at least
+  \f$10^{-6}\f$ of its length; \f$10^{-14}\f$ for a plane). Sparse data, the boundary and points
+  near a conic lower it, down to 1 (a plane, two neighbours suffice) and 0 (a constant). The
+  decision is taken in `double` for every number type, so double and exact builds choose the same
+  degrees; the coefficients are then solved in `FT` (normal equations by exact elimination for exact
   number types, the QR for inexact ones).
 
-  <b>Cost.</b> \f$O(V)\f$ time and memory: a bounded neighbourhood and at most five small
-  least-squares problems per vertex (about 90 microseconds per vertex at degree 5 on one
-  core, 20 at degree 3). Inexact number types fit large inputs on all cores.
+  <b>Cost.</b> \f$O(V)\f$ time and memory: a bounded neighbourhood and one Householder QR
+  per set of rings (usually three), whose leading columns give the fit and the leave-one-out
+  score of every degree sharing those rings. Inexact number types fit large inputs on all
+  cores.
 
   \tparam GeomTraits a model of `Kernel`
   \tparam Value `GeomTraits::FT` or a vector type, see `Value_traits`
@@ -228,13 +228,18 @@ private:
     std::vector<Index> points;         // the rings, nearest first
     std::vector<std::size_t> ring_end; // points[0, ring_end[r]) are rings 1..r+1
     std::vector<std::uint32_t> mark;   // BFS marks, by vertex (stamp = v + 1)
+    // the double fits, column-major: design, rhs (reflected in place), their originals, the
+    // rows of Q, leverages and fitted values
+    std::vector<double> design, rhs, original, rhs_original, q, leverage, fitted;
   };
 
+  // C(n, k) for n, k <= 5, from a table: polar values sit on the hot path of every fit (one
+  // per free control point), and the loop with integer divisions cost more than the rest.
   static int binomial(int n, int k) {
-    int r = 1;
-    for (int i = 1; i <= k; ++i)
-      r = r * (n - k + i) / i;
-    return r;
+    static constexpr int table[6][6] = {{1, 0, 0, 0, 0, 0}, {1, 1, 0, 0, 0, 0},
+                                        {1, 2, 1, 0, 0, 0}, {1, 3, 3, 1, 0, 0},
+                                        {1, 4, 6, 4, 1, 0}, {1, 5, 10, 10, 5, 1}};
+    return table[n][k];
   }
   static int unknowns(int d) { return (d + 1) * (d + 2) / 2 - 1; }
   // Position of x^h y^k in the per-vertex coefficient block (by total degree, then h).
@@ -250,7 +255,7 @@ private:
   }
 
   // Rings of v by breadth-first search, up to max_rings rings or enough points for
-  // max_degree.
+  // max_degree (1.5 times its unknowns, as fit_vertex() uses).
   void gather(Index v, Workspace& work) const {
     const Domain& domain = *m_domain;
     if (work.mark.size() != domain.number_of_vertices())
@@ -259,7 +264,10 @@ private:
     work.points.clear();
     work.ring_end.clear();
     work.mark[v] = stamp;
-    const std::size_t wanted = std::size_t(2 * unknowns(m_max_degree));
+    // the points the largest degree's fit needs (the lower degrees need fewer): more rings
+    // would only be traversed and sorted
+    const std::size_t wanted =
+        m_max_degree == 1 ? 2 : std::size_t((3 * unknowns(m_max_degree) + 1) / 2);
     std::size_t begin = 0;
     for (int ring = 0; ring < max_rings; ++ring) {
       const std::size_t end = work.points.size();
@@ -297,102 +305,265 @@ private:
     return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
   }
 
-  void fit_vertex(Index v, const std::vector<Value>& values, Workspace& work) {
+  // One Householder QR of the weighted design matrix of the points [0, n), columns ordered
+  // by degree (x, y, x^2, xy, y^2, ...): its leading columns are the QR of every lower
+  // degree on the same points, so one factorization gives the fits and leave-one-out
+  // scores of all the degrees that share these points (issue 10: one QR instead of five,
+  // and no explicit Q).
+  static constexpr std::size_t max_columns = 20; // the unknowns of a quintic
+
+  // sum x[i] y[i] over [begin, end), in four interleaved partial sums: without them the
+  // compiler may not reorder the additions, and one chain of dependent adds is four times
+  // slower (the order is fixed, so the result does not depend on the machine's load).
+  static double dot(const double* x, const double* y, std::size_t begin, std::size_t end) {
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    std::size_t i = begin;
+    for (; i + 4 <= end; i += 4) {
+      s0 += x[i] * y[i];
+      s1 += x[i + 1] * y[i + 1];
+      s2 += x[i + 2] * y[i + 2];
+      s3 += x[i + 3] * y[i + 3];
+    }
+    for (; i < end; ++i)
+      s0 += x[i] * y[i];
+    return (s0 + s1) + (s2 + s3);
+  }
+  struct Group {
+    Group() {} // no zero-filling: only the entries written are read
+    std::size_t n = 0;
+    double scale = 0, weight_sum = 0;
+    int columns = 0; // columns factorized (a column nearly in the span of the previous ones
+                     // stops the factorization)
+    std::array<double, max_columns> ratio;           // |R_kk| / |a_k|: how independent column k is
+    std::array<double, max_columns * max_columns> R; // upper triangle, R[j * 20 + i], i <= j
+    std::array<double, max_columns * std::size_t(D)> c; // Q^T b, per coordinate
+  };
+
+  // Factorizes the weighted design of degree `d` on the first `n` points into `g`;
+  // false if the points have no extent.
+  bool factorize(Index v, const std::vector<Value>& values, int d, std::size_t n, Workspace& work,
+                 Group& g) const {
     const Domain& domain = *m_domain;
+    const Point_2& center = domain.point(v);
+    const double cx = CGAL::to_double(center.x()), cy = CGAL::to_double(center.y());
+    // Scale: a power of two at least the largest distance, so |xi|, |eta| <= 1 and the
+    // exact coordinates stay dyadic multiples of the data.
+    double radius2 = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point_2& p = domain.point(work.points[i]);
+      const double dx = CGAL::to_double(p.x()) - cx, dy = CGAL::to_double(p.y()) - cy;
+      radius2 = (std::max)(radius2, dx * dx + dy * dy);
+    }
+    const double radius = std::sqrt(radius2);
+    if (!(radius > 0) || !std::isfinite(radius))
+      return false;
+    const int u = unknowns(d);
+    g.n = n;
+    g.scale = std::exp2(std::ceil(std::log2(radius)));
+    g.weight_sum = 0;
+    work.design.resize(n * std::size_t(u));
+    work.rhs.resize(n * std::size_t(D));
+    double* A = work.design.data();
+    double* b = work.rhs.data();
+    std::array<double, 6> xp, yp;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point_2& p = domain.point(work.points[i]);
+      const double xi = (CGAL::to_double(p.x()) - cx) / g.scale;
+      const double eta = (CGAL::to_double(p.y()) - cy) / g.scale;
+      const double w = 1 / std::sqrt(xi * xi + eta * eta); // square root of the weight
+      g.weight_sum += w * w;
+      xp[0] = w;
+      yp[0] = 1;
+      for (int e = 1; e <= d; ++e) {
+        xp[std::size_t(e)] = xp[std::size_t(e - 1)] * xi;
+        yp[std::size_t(e)] = yp[std::size_t(e - 1)] * eta;
+      }
+      int col = 0;
+      for (int t = 1; t <= d; ++t)
+        for (int k = 0; k <= t; ++k, ++col) // w xi^(t-k) eta^k
+          A[std::size_t(col) * n + i] = xp[std::size_t(t - k)] * yp[std::size_t(k)];
+      for (int k = 0; k < D; ++k)
+        b[std::size_t(k) * n + i] =
+            w * (CGAL::to_double(Value_traits<Value>::coordinate(values[work.points[i]], k)) -
+                 CGAL::to_double(Value_traits<Value>::coordinate(values[v], k)));
+    }
+    // kept for the rows of Q = A R^-1 and the residuals
+    work.original.assign(A, A + n * std::size_t(u));
+    work.rhs_original.assign(b, b + n * std::size_t(D));
+    g.columns = 0;
+    for (int k = 0; k < u; ++k) {
+      double* a = A + std::size_t(k) * n;
+      const double* original = work.original.data() + std::size_t(k) * n;
+      const double norm2 = dot(original, original, 0, n);
+      const double below2 = dot(a, a, std::size_t(k), n);
+      const double sigma = std::sqrt(below2);
+      const double ratio = norm2 > 0 ? sigma / std::sqrt(norm2) : 0;
+      if (!(ratio > 1e-14))
+        break; // dependent: no division by a vanishing pivot
+      g.ratio[std::size_t(k)] = ratio;
+      // Householder reflector H = I - v v^T / (sigma |a_k|), v = a - alpha e_k.
+      const double alpha = a[k] > 0 ? -sigma : sigma;
+      a[k] -= alpha;
+      const double beta = sigma * std::abs(a[k]); // v^T v / 2
+      auto reflect = [&](double* x) {
+        const double f = dot(a, x, std::size_t(k), n) / beta;
+        for (std::size_t i = std::size_t(k); i < n; ++i)
+          x[i] -= f * a[i];
+      };
+      for (int j = k + 1; j < u; ++j)
+        reflect(A + std::size_t(j) * n);
+      for (int j = 0; j < D; ++j)
+        reflect(b + std::size_t(j) * n);
+      for (int i = 0; i < k; ++i)
+        g.R[std::size_t(k) * max_columns + std::size_t(i)] = A[std::size_t(k) * n + std::size_t(i)];
+      g.R[std::size_t(k) * max_columns + std::size_t(k)] = alpha;
+      for (int j = 0; j < D; ++j)
+        g.c[std::size_t(j) * max_columns + std::size_t(k)] = b[std::size_t(j) * n + std::size_t(k)];
+      ++g.columns;
+    }
+    // R's entries above the diagonal of the columns not yet stored (row k of column j > k
+    // is final once reflector k has been applied).
+    for (int j = 0; j < g.columns; ++j)
+      for (int i = 0; i < j; ++i)
+        g.R[std::size_t(j) * max_columns + std::size_t(i)] = A[std::size_t(j) * n + std::size_t(i)];
+    return true;
+  }
+
+  // Leave-one-out scores of the fits with the first u[0] < u[1] < ... columns of `g`
+  // (weighted least squares: residual r_i / (1 - h_ii), h the hat matrix Q Q^T; the rows of
+  // Q are those of A R^-1): the weighted mean square of the left-out residuals, infinite
+  // where a point's leverage is 1.
+  template <std::size_t N>
+  void scores(const Group& g, const std::array<int, N>& u, std::size_t count, Workspace& work,
+              std::array<double, N>& score) const {
+    const std::size_t n = g.n;
+    const int last = u[count - 1];
+    // Y = A R^-1 column by column (each column an update of contiguous point vectors), with
+    // every point's leverage and fitted values accumulated as the columns come.
+    work.q.resize(n * std::size_t(last));
+    work.leverage.assign(n, 0.0);
+    work.fitted.assign(n * std::size_t(D), 0.0);
+    double* Y = work.q.data();
+    std::size_t next = 0;
+    for (int j = 0; j < last; ++j) {
+      double* y = Y + std::size_t(j) * n;
+      const double* a = work.original.data() + std::size_t(j) * n;
+      for (std::size_t i = 0; i < n; ++i)
+        y[i] = a[i];
+      for (int l = 0; l < j; ++l) {
+        const double r = g.R[std::size_t(j) * max_columns + std::size_t(l)];
+        const double* yl = Y + std::size_t(l) * n;
+        for (std::size_t i = 0; i < n; ++i)
+          y[i] -= r * yl[i];
+      }
+      const double inverse = 1 / g.R[std::size_t(j) * max_columns + std::size_t(j)];
+      for (std::size_t i = 0; i < n; ++i) {
+        y[i] *= inverse;
+        work.leverage[i] += y[i] * y[i];
+      }
+      for (int k = 0; k < D; ++k) {
+        const double c = g.c[std::size_t(k) * max_columns + std::size_t(j)];
+        double* f = work.fitted.data() + std::size_t(k) * n;
+        for (std::size_t i = 0; i < n; ++i)
+          f[i] += y[i] * c;
+      }
+      if (j + 1 != u[next])
+        continue;
+      double sum = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        double residual2 = 0;
+        for (int k = 0; k < D; ++k) {
+          const double r =
+              work.rhs_original[std::size_t(k) * n + i] - work.fitted[std::size_t(k) * n + i];
+          residual2 += r * r;
+        }
+        const double keep = 1 - work.leverage[i];
+        if (!(keep > 1e-8)) {
+          sum = std::numeric_limits<double>::infinity();
+          break;
+        }
+        sum += residual2 / (keep * keep);
+      }
+      score[next++] = sum / g.weight_sum;
+    }
+  }
+
+  void fit_vertex(Index v, const std::vector<Value>& values, Workspace& work) {
     coefficient(v, 0, 0) = values[v];
     if (m_max_degree == 0)
       return;
     gather(v, work);
-    const Point_2& c = domain.point(v);
-    const double cx = CGAL::to_double(c.x()), cy = CGAL::to_double(c.y());
     struct Candidate {
       int degree = -1;
-      std::size_t n = 0;
-      double scale = 0, score = 0;
-      Eigen::MatrixXd x;
-    };
-    // The weighted least-squares fit of degree d to the first n points of the rings, with
-    // its leave-one-out score; false if the neighbourhood does not determine it.
-    auto assess = [&](int d, std::size_t n, Candidate& candidate) {
-      const int u = unknowns(d);
-      // Scale: a power of two at least the largest distance, so |xi|, |eta| <= 1 and the
-      // exact coordinates stay dyadic multiples of the data.
-      double radius = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const Point_2& p = domain.point(work.points[i]);
-        radius = (std::max)(radius,
-                            std::hypot(CGAL::to_double(p.x()) - cx, CGAL::to_double(p.y()) - cy));
-      }
-      if (!(radius > 0) || !std::isfinite(radius))
-        return false; // candidate.degree stays -1: no higher degree either
-      candidate.degree = d;
-      const double scale = std::exp2(std::ceil(std::log2(radius)));
-      Eigen::MatrixXd A(Eigen::Index(n), u);
-      Eigen::MatrixXd b(Eigen::Index(n), D);
-      double weight_sum = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const Point_2& p = domain.point(work.points[i]);
-        const double xi = (CGAL::to_double(p.x()) - cx) / scale;
-        const double eta = (CGAL::to_double(p.y()) - cy) / scale;
-        const double w = 1 / std::hypot(xi, eta); // square root of the weight 1/|.|^2
-        weight_sum += w * w;
-        fill_monomials(xi, eta, d, w, A.row(Eigen::Index(i)));
-        for (int k = 0; k < D; ++k)
-          b(Eigen::Index(i), k) =
-              w * (CGAL::to_double(Value_traits<Value>::coordinate(values[work.points[i]], k)) -
-                   CGAL::to_double(Value_traits<Value>::coordinate(values[v], k)));
-      }
-      Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
-      // A plane is needed for linear precision however thin the neighbourhood; exact
-      // builds then solve exactly (a vertex of a valid domain always has a full-rank pair).
-      qr.setThreshold(d == 1 ? 1e-14 : 1e-6);
-      if (qr.rank() < u && !(exact && d == 1))
-        return false;
-      candidate = Candidate{d, n, scale, 0, qr.solve(b)};
-      // Leave-one-out residuals of weighted least squares: r_i / (1 - h_ii), h the hat
-      // matrix Q Q^T; their weighted mean square is the score of this degree.
-      const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(Eigen::Index(n), u);
-      const Eigen::MatrixXd residual = b - A * candidate.x;
+      std::size_t group = 0;
       double score = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const double leverage = Q.row(Eigen::Index(i)).squaredNorm();
-        if (!(1 - leverage > 1e-8)) {
-          score = std::numeric_limits<double>::infinity();
-          break;
-        }
-        score += residual.row(Eigen::Index(i)).squaredNorm() / ((1 - leverage) * (1 - leverage));
-      }
-      candidate.score = score / weight_sum;
-      return true;
     };
+    // Degree d fits the fewest rings holding at least 1.5 times its unknowns (all rings if
+    // none does; a plane needs 2 points); degrees on the same rings share one QR.
     boost::container::static_vector<Candidate, max_supported_degree> candidates;
-    for (int d = 1; d <= m_max_degree; ++d) {
-      const int u = unknowns(d);
-      const std::size_t needed = d == 1 ? 2 : std::size_t((3 * u + 1) / 2);
-      // The fewest rings holding enough points (all of them if none does).
-      std::size_t n = work.points.size();
-      for (std::size_t end : work.ring_end)
-        if (end >= needed) {
-          n = end;
-          break;
-        }
-      if (n < needed)
+    boost::container::static_vector<Group, max_supported_degree> groups;
+    boost::container::static_vector<double, max_supported_degree> plane_score;
+    int d = 1;
+    while (d <= m_max_degree) {
+      auto rings_for = [&](int degree) {
+        const int u = unknowns(degree);
+        const std::size_t needed = degree == 1 ? 2 : std::size_t((3 * u + 1) / 2);
+        std::size_t n = work.points.size();
+        for (std::size_t end : work.ring_end)
+          if (end >= needed) {
+            n = end;
+            break;
+          }
+        return n < needed ? std::size_t(0) : n;
+      };
+      const std::size_t n = rings_for(d);
+      if (n == 0)
         break;
-      Candidate candidate;
-      if (!assess(d, n, candidate)) {
-        if (candidate.degree < 0)
-          break; // no extent: no higher degree either
-        continue;
+      int top = d;
+      while (top < m_max_degree && rings_for(top + 1) == n)
+        ++top;
+      groups.emplace_back();
+      Group& g = groups.back();
+      if (!factorize(v, values, top, n, work, g)) {
+        groups.pop_back();
+        break; // no extent: no higher degree either
       }
-      candidates.push_back(std::move(candidate));
+      // The degrees of this group the points determine: a plane needs its two columns
+      // independent to 1e-14 (linear precision however thin the neighbourhood), higher
+      // degrees every column to 1e-6; exact builds accept a plane in any case and solve it
+      // exactly (a vertex of a valid domain always has a full-rank pair).
+      std::array<int, max_supported_degree + 1> u{};
+      std::size_t count = 0;
+      u[count++] = 2; // the plane on these points, for the resolution
+      std::array<int, max_supported_degree> degree_of{};
+      for (int e = (std::max)(d, 2); e <= top; ++e) {
+        const int ue = unknowns(e);
+        bool independent = g.columns >= ue;
+        for (int k = 0; independent && k < ue; ++k)
+          independent = g.ratio[std::size_t(k)] > 1e-6;
+        if (!independent)
+          break; // the higher degrees of this group include the dependent columns
+        degree_of[count - 1] = e;
+        u[count++] = ue;
+      }
+      const bool plane = g.columns >= 2;
+      std::array<double, max_supported_degree + 1> s{};
+      if (plane)
+        scores(g, u, count, work, s);
+      plane_score.push_back(plane ? s[0] : std::numeric_limits<double>::infinity());
+      if (d == 1 && (plane || exact))
+        candidates.push_back(
+            {1, groups.size() - 1, plane ? s[0] : std::numeric_limits<double>::infinity()});
+      for (std::size_t k = 1; k < count; ++k)
+        candidates.push_back({degree_of[k - 1], groups.size() - 1, s[k]});
+      d = top + 1;
     }
     if (candidates.empty()) {
       m_degree[v] = 0; // isolated or degenerate neighbourhood: a constant
       return;
     }
     // Largest degree, or the lowest degree that predicts left-out points nearly as well
-    // as the best one (scores at rounding level count as ties).
-    // Scores at rounding level of the neighbourhood's data count as zero.
+    // as the best one. Scores at rounding level of the neighbourhood's data count as zero.
     double data_scale = 0;
     for (Index w : work.points)
       for (int k = 0; k < D; ++k)
@@ -409,15 +580,11 @@ private:
         if (candidates[chosen].score <= (std::max)(m_tie_ratio * best, floor))
           break;
     }
-    // Resolution: leave-one-out score of the chosen degree against the plane's (degree 1 is
-    // the first candidate whenever a plane is determined).
+    // Resolution: leave-one-out score of the chosen degree against the plane's on the
+    // chosen degree's own points (the same points, one model less rich).
     {
-      // The plane on the chosen degree's own points: the same points, one model less rich.
-      Candidate flat;
-      const bool has_plane = candidates[chosen].degree == 1 ? (flat = candidates[chosen], true)
-                                                            : assess(1, candidates[chosen].n, flat);
-      const double plane = flat.score, own = candidates[chosen].score;
-      if (!has_plane || !std::isfinite(plane))
+      const double plane = plane_score[candidates[chosen].group], own = candidates[chosen].score;
+      if (!std::isfinite(plane))
         m_resolution[v] = 1;
       else if (!(own > floor))
         m_resolution[v] = 0;
@@ -426,32 +593,37 @@ private:
     }
     for (std::size_t k = chosen + 1; k-- > 0;) {
       const Candidate& candidate = candidates[k];
-      const int d = candidate.degree;
-      m_scale[v] = FT(1) / FT(candidate.scale);
+      const Group& g = groups[candidate.group];
+      const int degree = candidate.degree;
+      m_scale[v] = FT(1) / FT(g.scale);
       if constexpr (exact) {
-        if (!solve_exact(v, values, work, candidate.n, d, m_scale[v]))
+        if (!solve_exact(v, values, work, g.n, degree, m_scale[v]))
           continue;
       } else {
-        for (int t = 1, col = 0; t <= d; ++t)
+        // back substitution R x = Q^T b on the degree's leading columns
+        const int u = unknowns(degree);
+        std::array<double, max_columns * std::size_t(D)> x{};
+        for (int j = 0; j < D; ++j)
+          for (int i = u; i-- > 0;) {
+            double s = g.c[std::size_t(j) * max_columns + std::size_t(i)];
+            for (int l = i + 1; l < u; ++l)
+              s -= g.R[std::size_t(l) * max_columns + std::size_t(i)] *
+                   x[std::size_t(j) * max_columns + std::size_t(l)];
+            x[std::size_t(j) * max_columns + std::size_t(i)] =
+                s / g.R[std::size_t(i) * max_columns + std::size_t(i)];
+          }
+        for (int t = 1, col = 0; t <= degree; ++t)
           for (int j = 0; j <= t; ++j, ++col) {
             std::array<FT, std::size_t(D)> cs;
             for (int i = 0; i < D; ++i)
-              cs[std::size_t(i)] = FT(candidate.x(col, i));
+              cs[std::size_t(i)] = FT(x[std::size_t(i) * max_columns + std::size_t(col)]);
             coefficient(v, t - j, j) = Value_traits<Value>::from_coordinates(cs);
           }
       }
-      m_degree[v] = d;
+      m_degree[v] = degree;
       return;
     }
     m_degree[v] = 0;
-  }
-
-  template <class Row>
-  static void fill_monomials(double xi, double eta, int d, double w, Row&& row) {
-    int col = 0;
-    for (int t = 1; t <= d; ++t)
-      for (int k = 0; k <= t; ++k, ++col)
-        row(col) = w * std::pow(xi, t - k) * std::pow(eta, k);
   }
 
   // Normal equations sum w a a^T x = sum w a (z - z_v) with w = 1/|xi|^2, solved by exact

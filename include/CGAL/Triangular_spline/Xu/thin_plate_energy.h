@@ -12,6 +12,8 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 namespace CGAL {
@@ -32,6 +34,71 @@ inline std::vector<Multi_index> bernstein_indices(int degree) {
       indices.push_back({i, j, degree - i - j});
   return indices;
 }
+
+namespace internal {
+
+// Position of a multi-index of degree m in bernstein_indices(m): rows i = m .. a.i + 1 first.
+inline std::size_t bernstein_position(int m, const Multi_index& a) {
+  const int before = (m - a.i) * (m - a.i + 1) / 2;
+  return static_cast<std::size_t>(before + (m - a.i - a.j));
+}
+
+// The Gram matrix of the Bernstein polynomials of degree d over a triangle of area
+// (2d+1)(2d+2)/2, in the order of bernstein_indices(d): C(d,a) C(d,b) / C(2d,a+b), with C the
+// multinomial coefficients (integers, exact up to d = 10 in 64 bits). It does not depend on
+// the triangle, so it is computed once per number type and degree (the energy of 10^6
+// patches recomputed it from factorials every time).
+template <class FT>
+const std::vector<FT>& bernstein_gram_table(int d) {
+  static std::mutex mutex;
+  static std::vector<std::unique_ptr<const std::vector<FT>>> tables;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (tables.size() <= std::size_t(d))
+    tables.resize(std::size_t(d) + 1);
+  if (!tables[std::size_t(d)]) {
+    auto factorial = [](int k) -> FT {
+      FT f(1);
+      for (int i = 2; i <= k; ++i)
+        f = f * FT(i);
+      return f;
+    };
+    auto multinomial = [&](int m, const Multi_index& a) -> FT {
+      return factorial(m) / (factorial(a.i) * factorial(a.j) * factorial(a.k));
+    };
+    const auto coarse = bernstein_indices(d);
+    const std::size_t c = coarse.size();
+    auto table = std::make_unique<std::vector<FT>>(c * c);
+    for (std::size_t a = 0; a < c; ++a)
+      for (std::size_t b = 0; b < c; ++b) {
+        const Multi_index sum{coarse[a].i + coarse[b].i, coarse[a].j + coarse[b].j,
+                              coarse[a].k + coarse[b].k};
+        (*table)[a * c + b] =
+            multinomial(d, coarse[a]) * multinomial(d, coarse[b]) / multinomial(2 * d, sum);
+      }
+    tables[std::size_t(d)] = std::move(table);
+  }
+  return *tables[std::size_t(d)];
+}
+
+// The barycentric coordinates of the unit vectors e_x, e_y in the triangle (r, s, t) and the
+// scale of the Gram matrix of degree m - 2 (area and the factor m(m-1) of the second
+// derivatives); throws on a collinear triangle.
+template <class Point_2, class FT>
+void thin_plate_frame(int degree, const Point_2& r, const Point_2& s, const Point_2& t,
+                      std::array<FT, 3>& ex, std::array<FT, 3>& ey, FT& scale) {
+  const FT ux = s.x() - r.x(), uy = s.y() - r.y(), vx = t.x() - r.x(), vy = t.y() - r.y();
+  const FT det = ux * vy - uy * vx;
+  if (CGAL::is_zero(det))
+    throw Invalid_input("thin_plate_energy: degenerate triangle");
+  ex = {{(uy - vy) / det, vy / det, -uy / det}};
+  ey = {{(vx - ux) / det, -vx / det, ux / det}};
+  const FT area = CGAL::abs(det) / FT(2);
+  const int d = degree - 2;
+  scale = FT(degree * (degree - 1)) * FT(degree * (degree - 1)) * area /
+          (FT((2 * d + 1) * (2 * d + 2)) / FT(2));
+}
+
+} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineSplines
@@ -82,24 +149,14 @@ auto thin_plate_energy_factors(int degree, const Point_2& r, const Point_2& s, c
   using FT = std::decay_t<decltype(r.x())>;
   if (degree < 2)
     throw Invalid_input("thin_plate_energy: the degree must be at least 2");
-  const FT ux = s.x() - r.x(), uy = s.y() - r.y(), vx = t.x() - r.x(), vy = t.y() - r.y();
-  const FT det = ux * vy - uy * vx;
-  if (CGAL::is_zero(det))
-    throw Invalid_input("thin_plate_energy: degenerate triangle");
-  // Barycentric coordinates of the unit vectors e_x and e_y.
-  const std::array<FT, 3> ex{{(uy - vy) / det, vy / det, -uy / det}};
-  const std::array<FT, 3> ey{{(vx - ux) / det, -vx / det, ux / det}};
-  const FT area = CGAL::abs(det) / FT(2);
+  std::array<FT, 3> ex, ey;
+  FT scale;
+  internal::thin_plate_frame(degree, r, s, t, ex, ey, scale);
   const auto coarse = bernstein_indices(degree - 2);
   Thin_plate_energy_factors<FT> factors;
   factors.fine = static_cast<std::size_t>((degree + 1) * (degree + 2) / 2);
   factors.coarse = coarse.size();
   const std::size_t n = factors.fine, c = factors.coarse;
-  auto index_of = [degree](const Multi_index& a) {
-    // position in bernstein_indices(degree): rows i = degree .. a.i + 1 come first
-    const int before = (degree - a.i) * (degree - a.i + 1) / 2;
-    return static_cast<std::size_t>(before + (degree - a.i - a.j));
-  };
   // The factor m(m-1) of the second derivatives goes into M.
   auto second = [&](const std::array<FT, 3>& u, const std::array<FT, 3>& w) {
     std::vector<FT> l(c * n, FT(0));
@@ -109,33 +166,16 @@ auto thin_plate_energy_factors(int degree, const Point_2& r, const Point_2& s, c
           Multi_index a = coarse[g];
           ++a[i];
           ++a[j];
-          l[g * n + index_of(a)] += u[std::size_t(i)] * w[std::size_t(j)];
+          l[g * n + internal::bernstein_position(degree, a)] +=
+              u[std::size_t(i)] * w[std::size_t(j)];
         }
     return l;
   };
   factors.second = {{second(ex, ex), second(ex, ey), second(ey, ey)}};
-  // Explicit return types: with GMP's expression templates, `auto` would return
-  // expressions of destroyed temporaries.
-  auto factorial = [](int k) -> FT {
-    FT f(1);
-    for (int i = 2; i <= k; ++i)
-      f = f * FT(i);
-    return f;
-  };
-  auto multinomial = [&](int m, const Multi_index& a) -> FT {
-    return factorial(m) / (factorial(a.i) * factorial(a.j) * factorial(a.k));
-  };
-  const int d = degree - 2;
-  const FT scale = FT(degree * (degree - 1)) * FT(degree * (degree - 1)) * area /
-                   (FT((2 * d + 1) * (2 * d + 2)) / FT(2));
+  const std::vector<FT>& table = internal::bernstein_gram_table<FT>(degree - 2);
   factors.gram.resize(c * c);
-  for (std::size_t a = 0; a < c; ++a)
-    for (std::size_t b = 0; b < c; ++b) {
-      const Multi_index sum{coarse[a].i + coarse[b].i, coarse[a].j + coarse[b].j,
-                            coarse[a].k + coarse[b].k};
-      factors.gram[a * c + b] =
-          scale * multinomial(d, coarse[a]) * multinomial(d, coarse[b]) / multinomial(2 * d, sum);
-    }
+  for (std::size_t k = 0; k < c * c; ++k)
+    factors.gram[k] = scale * table[k];
   return factors;
 }
 
@@ -206,34 +246,49 @@ typename GeomTraits::FT thin_plate_energy(const Bezier_triangle<GeomTraits>& pat
   const int m = patch.degree();
   if (m < 2)
     return FT(0);
-  const auto factors =
-      thin_plate_energy_factors(m, patch.vertex(0), patch.vertex(1), patch.vertex(2));
-  const auto indices = bernstein_indices(m);
-  const std::size_t n = factors.fine, c = factors.coarse;
-  std::vector<FT> b(n), d(c);
-  for (std::size_t i = 0; i < n; ++i)
-    b[i] = patch.control_point(indices[i]);
+  std::array<FT, 3> ex, ey;
+  FT scale;
+  internal::thin_plate_frame(m, patch.vertex(0), patch.vertex(1), patch.vertex(2), ex, ey, scale);
+  // Differences first (Farin's directional derivatives, one degree at a time), then squares:
+  // D_x b and D_y b of degree m - 1, then D_xx, D_xy, D_yy of degree m - 2.
+  const auto fine = bernstein_indices(m - 1), coarse = bernstein_indices(m - 2);
+  auto difference = [](const std::array<FT, 3>& e, const std::vector<Multi_index>& to, int from,
+                       auto&& at) {
+    std::vector<FT> out(to.size(), FT(0));
+    for (std::size_t g = 0; g < to.size(); ++g)
+      for (int i = 0; i < 3; ++i) {
+        Multi_index a = to[g];
+        ++a[i];
+        out[g] = out[g] + e[std::size_t(i)] * at(internal::bernstein_position(from, a), a);
+      }
+    return out;
+  };
+  auto from_patch = [&](std::size_t, const Multi_index& a) -> const FT& {
+    return patch.control_point(a);
+  };
+  const std::vector<FT> dx = difference(ex, fine, m, from_patch);
+  const std::vector<FT> dy = difference(ey, fine, m, from_patch);
+  auto of = [](const std::vector<FT>& v) {
+    return [&v](std::size_t i, const Multi_index&) -> const FT& { return v[i]; };
+  };
+  const std::array<std::vector<FT>, 3> second{{difference(ex, coarse, m - 1, of(dx)),
+                                               difference(ey, coarse, m - 1, of(dx)),
+                                               difference(ey, coarse, m - 1, of(dy))}};
+  const std::vector<FT>& table = internal::bernstein_gram_table<FT>(m - 2);
+  const std::size_t c = coarse.size();
   FT energy(0);
   for (int p = 0; p < 3; ++p) {
-    // d = L_p b, then w_p d^T M d
-    const auto& l = factors.second[std::size_t(p)];
-    for (std::size_t a = 0; a < c; ++a) {
-      FT sum(0);
-      for (std::size_t i = 0; i < n; ++i)
-        if (!CGAL::is_zero(l[a * n + i]))
-          sum = sum + l[a * n + i] * b[i];
-      d[a] = sum;
-    }
+    const std::vector<FT>& d = second[std::size_t(p)];
     FT quadratic(0);
     for (std::size_t a = 0; a < c; ++a) {
       FT row(0);
       for (std::size_t e = 0; e < c; ++e)
-        row = row + factors.gram[a * c + e] * d[e];
+        row = row + table[a * c + e] * d[e];
       quadratic = quadratic + d[a] * row;
     }
-    energy = energy + FT(factors.weight[std::size_t(p)]) * quadratic;
+    energy = energy + FT(Thin_plate_energy_factors<FT>::weight[std::size_t(p)]) * quadratic;
   }
-  return energy;
+  return scale * energy;
 }
 
 } // namespace Triangular_spline
