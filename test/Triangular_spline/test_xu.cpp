@@ -1582,3 +1582,149 @@ TEST(GivenGradients, AreInterpolatedExactlyByEveryInterpolatingFit) {
                                    not_finite),
                TS::Invalid_input);
 }
+
+namespace {
+
+// Options that force the overlapping windows of the Schwarz solver on a small problem.
+TS::internal::Schwarz_options small_windows(int sweeps) {
+  TS::internal::Schwarz_options options;
+  options.direct_limit = 0;
+  options.window_vertices = 60;
+  options.sweeps = sweeps;
+  return options;
+}
+
+double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double largest = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    largest = (std::max)(largest, std::abs(a[i] - b[i]));
+  return largest;
+}
+
+// Noisy data at 700 random points: feature-poor for the local polynomials, so every slot
+// is set by the solve.
+std::pair<Planar_domain<Epick>, std::vector<double>> noisy_random_data(std::size_t n,
+                                                                       unsigned seed) {
+  auto domain = delaunay_of<Epick>(random_square_points(n, seed));
+  std::mt19937 engine(seed + 1);
+  std::normal_distribution<double> noise(0, 0.02);
+  std::vector<double> z;
+  for (const auto& p : domain.points())
+    z.push_back(std::exp(p.x()) * std::sin(2 * p.y()) + noise(engine));
+  return {std::move(domain), std::move(z)};
+}
+
+} // namespace
+
+TEST(MinimalEnergy, WindowedSweepsConvergeToTheDirectMinimiser) {
+  // 700 points in about 12 windows of 60 vertices (3 rings of margin): each sweep lowers
+  // the energy, and three sweeps give the direct solve's control values to 1e-7 (measured
+  // 1e-9; the direct solve's own rounding is 1e-10). The data are interpolated exactly.
+  const auto [domain, z] = noisy_random_data(700, 3);
+  C1_quintic_spline<Epick> direct(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::internal::Schwarz_statistics solved;
+  TS::internal::fit_vertex_data(direct, z, Fit::MINIMAL_ENERGY, 3,
+                                TS::Degree_selection::CROSS_VALIDATION, 0, {},
+                                TS::internal::Schwarz_options(), &solved);
+  EXPECT_EQ(solved.windows, 0u) << "a small problem is solved directly";
+  const double least = weighted_energy(direct);
+  C1_quintic_spline<Epick> local(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(local, z, Fit::LOCAL_POLYNOMIAL, 3);
+  double previous = weighted_energy(local);
+  for (int sweeps = 1; sweeps <= 3; ++sweeps) {
+    C1_quintic_spline<Epick> windowed(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::internal::fit_vertex_data(windowed, z, Fit::MINIMAL_ENERGY, 3,
+                                  TS::Degree_selection::CROSS_VALIDATION, 0, {},
+                                  small_windows(sweeps), &solved);
+    EXPECT_GE(solved.windows, 8u);
+    EXPECT_EQ(solved.sweeps, sweeps);
+    const double e = weighted_energy(windowed);
+    EXPECT_LE(e, previous * (1 + 1e-12)) << sweeps << " sweeps";
+    EXPECT_GE(e, least * (1 - 1e-9)) << sweeps << " sweeps: below the minimum";
+    previous = e;
+    for (Index v = 0; v < domain.number_of_vertices(); ++v)
+      EXPECT_EQ(windowed.value(windowed.vertex_slot(v)), z[v]);
+    EXPECT_LT(certify(windowed).max_residual, 1e-10);
+    if (sweeps == 1) {
+      EXPECT_LT(e, least * (1 + 1e-6)) << "one sweep: energy within 1e-6 of the minimum";
+    }
+    if (sweeps == 3) {
+      EXPECT_LT(largest_difference(windowed.values(), direct.values()), 1e-7);
+    }
+  }
+}
+
+TEST(MinimalEnergy, WindowedSmoothingAndLeastSquaresEqualTheDirectSolve) {
+  // The same windows for the smoothing fit (corners are unknowns) and for the least-squares
+  // fit: three sweeps give the direct solution to 1e-7.
+  const auto [domain, z] = noisy_random_data(500, 8);
+  for (Fit fit : {Fit::MINIMAL_ENERGY, Fit::LEAST_SQUARES}) {
+    const double lambda = fit == Fit::MINIMAL_ENERGY ? 0.5 : 0.0;
+    C1_quintic_spline<Epick> direct(domain, Corner_frame::CORNER_AND_TWO_STARS),
+        windowed(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::fit_vertex_data(direct, z, fit, 3, TS::Degree_selection::CROSS_VALIDATION, lambda);
+    TS::internal::Schwarz_statistics solved;
+    TS::internal::fit_vertex_data(windowed, z, fit, 3, TS::Degree_selection::CROSS_VALIDATION,
+                                  lambda, {}, small_windows(3), &solved);
+    EXPECT_GE(solved.windows, 6u) << int(fit);
+    EXPECT_LT(largest_difference(windowed.values(), direct.values()), 1e-7) << int(fit);
+    if (fit == Fit::MINIMAL_ENERGY) {
+      double moved = 0; // smoothing: the corners are solved for, not copied
+      for (Index v = 0; v < domain.number_of_vertices(); ++v)
+        moved = (std::max)(moved, std::abs(windowed.value(windowed.vertex_slot(v)) - z[v]));
+      EXPECT_GT(moved, 1e-3);
+    }
+  }
+}
+
+TEST(MinimalEnergy, WindowedFitsReproduceLinearDataAndStayExactlyC1) {
+  // Linear data: every window's minimum is the plane, whatever the values beyond it, so
+  // the windowed fits are the plane to the solve's rounding. An exact build stays exactly
+  // C^1: the solve's doubles are converted to rationals and propagated exactly.
+  const auto domain = delaunay_of<Epick>(random_square_points(400, 12));
+  std::vector<double> linear;
+  for (const auto& p : domain.points())
+    linear.push_back(2 * p.x() - 3 * p.y() + 1);
+  for (Fit fit : {Fit::MINIMAL_ENERGY, Fit::LEAST_SQUARES}) {
+    C1_quintic_spline<Epick> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::internal::fit_vertex_data(spline, linear, fit, 3, TS::Degree_selection::CROSS_VALIDATION, 0,
+                                  {}, small_windows(1));
+    for (Index f = 0; f < domain.number_of_faces(); ++f) {
+      const auto& t = domain.face(f);
+      const auto c = CGAL::centroid(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+      EXPECT_NEAR(spline.patch(f).evaluate(c), 2 * c.x() - 3 * c.y() + 1, 1e-9) << int(fit);
+    }
+  }
+  std::vector<Exact_kernel::Point_2> points;
+  for (const auto& p : random_square_points(150, 13))
+    points.emplace_back(p.x(), p.y());
+  const auto exact_domain = delaunay_of<Exact_kernel>(points);
+  std::vector<Exact_kernel::FT> exact_z;
+  for (std::size_t v = 0; v < exact_domain.number_of_vertices(); ++v)
+    exact_z.push_back(Exact_kernel::FT(int(v % 5), 3));
+  C1_quintic_spline<Exact_kernel> exact(exact_domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::internal::Schwarz_options options = small_windows(1);
+  options.window_vertices = 30;
+  TS::internal::Schwarz_statistics solved;
+  TS::internal::fit_vertex_data(exact, exact_z, Fit::MINIMAL_ENERGY, 3,
+                                TS::Degree_selection::CROSS_VALIDATION, 0.3, {}, options, &solved);
+  EXPECT_GE(solved.windows, 3u);
+  EXPECT_TRUE(certify(exact).certified);
+}
+
+TEST(Adaptive, WindowedEnergyPartEqualsTheDirectOne) {
+  // The adaptive fit's energy part through the windows: the same spline as the direct
+  // solve to 1e-7 after three sweeps, never skipped.
+  const auto [domain, z] = noisy_random_data(600, 21);
+  C1_quintic_spline<Epick> direct(domain, Corner_frame::CORNER_AND_TWO_STARS),
+      windowed(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  const auto statistics = TS::fit_vertex_data(direct, z, Fit::ADAPTIVE, 5);
+  ASSERT_GT(statistics.vertices_by_trust[1] + statistics.vertices_by_trust[2], 100u);
+  EXPECT_FALSE(statistics.energy_skipped);
+  TS::internal::Schwarz_statistics solved;
+  TS::internal::fit_vertex_data(windowed, z, Fit::ADAPTIVE, 5,
+                                TS::Degree_selection::CROSS_VALIDATION, 0, {}, small_windows(3),
+                                &solved);
+  EXPECT_GE(solved.windows, 6u);
+  EXPECT_LT(largest_difference(windowed.values(), direct.values()), 1e-7);
+}

@@ -8,6 +8,9 @@
 #include <CGAL/Triangular_spline/exceptions.h>
 #include <CGAL/Triangular_spline/Xu/local_polynomial_fit.h>
 #include <CGAL/Triangular_spline/Xu/thin_plate_energy.h>
+#include <CGAL/Triangular_spline/internal/schwarz_solver.h>
+
+#include <CGAL/Simple_cartesian.h>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -17,6 +20,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -46,14 +51,19 @@ enum class Fit {
   TANGENT_PLANES,
   /// interpolation of the values; the other free points are chosen so that ALL control
   /// points (free and propagated) are as close as possible, in least squares, to the
-  /// `TANGENT_PLANES` targets: every control value is a linear function of the free ones,
-  /// and the normal equations are solved with a sparse Cholesky factorization (Eigen). This
-  /// is the remedy for the amplification of Xu §4.4.5: thin frames propagate with large
+  /// `TANGENT_PLANES` targets: every control value is a linear function of the free ones.
+  /// This is the remedy for the amplification of Xu §4.4.5: thin frames propagate with large
   /// weights, and the least-squares choice keeps the propagated points near the data
-  /// instead of letting them overshoot. The solve runs in `double`; the free values are
+  /// instead of letting them overshoot. The targets are those of `LOCAL_POLYNOMIAL`. The
+  /// minimiser is global: one sparse Cholesky factorization (Eigen) up to 40000 unknowns
+  /// (about 3600 vertices), beyond one sweep of overlapping windows (cells of about 500
+  /// vertices and three rings, each minimised exactly with the others at their current
+  /// values, starting from the targets): linear time, memory bounded by a window, and the
+  /// global minimiser to 1.3e-12 (largest control-value difference from the direct solve,
+  /// measured on 20000 noisy random points). The solve runs in `double`; the free values are
   /// then converted to `FT` and propagated in `FT`, so an exact spline is still exactly C^1
-  /// (linear data is then reproduced up to the solve's rounding). The targets are those of
-  /// `LOCAL_POLYNOMIAL`. Needs `Corner_frame::CORNER_AND_TWO_STARS`
+  /// (linear data is then reproduced up to the solve's rounding). Needs
+  /// `Corner_frame::CORNER_AND_TWO_STARS`
   LEAST_SQUARES,
   /// interpolation of the values; every free point takes the polar value of the local
   /// polynomial (`Local_polynomials`, degree 3 by default) of its nearest corner, averaged
@@ -77,8 +87,15 @@ enum class Fit {
   /// a positive `smoothing` \f$\lambda\f$ it no longer interpolates but minimises
   /// \f$\sum_v (s(v) - z_v)^2 + \lambda h^2 E(s)\f$, \f$h^2\f$ the domain's area per
   /// vertex, for noisy data. Reproduces linear data exactly (up to the solve's rounding in
-  /// exact builds). A global sparse solve: superlinear time and memory. Needs
-  /// `Corner_frame::CORNER_AND_TWO_STARS`
+  /// exact builds). The global minimiser: one sparse Cholesky factorization up to 40000
+  /// unknowns (about 3600 vertices); beyond, two sweeps of overlapping windows (block
+  /// Gauss-Seidel: cells of about 500 vertices with three rings of margin, each window's
+  /// energy minimised exactly with the other unknowns at their current values, the first
+  /// sweep starting from the `LOCAL_POLYNOMIAL` values). Every window solve lowers the
+  /// energy and the sweeps converge to the global minimiser; after two, the largest
+  /// difference of a control value from the direct solve is 1.2e-8 (20000 noisy random
+  /// points; 3e-5 with smoothing 0.1). Linear time (about 0.13 ms per vertex and sweep),
+  /// memory bounded by a window. Needs `Corner_frame::CORNER_AND_TWO_STARS`
   MINIMAL_ENERGY,
   /// interpolation of the values; `LOCAL_POLYNOMIAL` where the local polynomials resolve the
   /// data, `MINIMAL_ENERGY` where they do not, blended in between: the most accurate fit on
@@ -93,9 +110,9 @@ enum class Fit {
   /// next to them), then each nearest vertex's share
   /// becomes \f$\tau_v\f$ times its polynomial's value plus \f$1-\tau_v\f$ times the energy
   /// value. Data from a polynomial of degree at most the local degree leave every vertex
-  /// trusted and are reproduced exactly, as by `LOCAL_POLYNOMIAL`. The energy solve is global
-  /// over the untrusted region: beyond \f$10^4\f$ untrusted vertices it is skipped and the
-  /// fit is `LOCAL_POLYNOMIAL` (`Fit_statistics::energy_skipped`). Needs
+  /// trusted and are reproduced exactly, as by `LOCAL_POLYNOMIAL`. The energy solve is that
+  /// of `MINIMAL_ENERGY` over the untrusted region (direct, or two sweeps of windows beyond
+  /// 40000 unknowns), linear in its size and never skipped. Needs
   /// `Corner_frame::CORNER_AND_TWO_STARS`
   ADAPTIVE
 };
@@ -215,68 +232,6 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
   return a;
 }
 
-// Solves the sparse symmetric positive definite system and writes the free values (the
-// fixed ones take their given values), converted to FT.
-template <class GeomTraits, class Value>
-void set_solved_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
-                            const Affine_slots<Value>& a,
-                            std::vector<Eigen::Triplet<double>>& triplets,
-                            const Eigen::MatrixXd& rhs, const char* what) {
-  using FT = typename GeomTraits::FT;
-  using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
-  constexpr int D = Value_traits<Value>::dimension;
-  for (const auto& [s, value] : a.fixed)
-    spline.set_free_value(s, value);
-  if (a.unknowns == 0)
-    return;
-  const Eigen::Index size = static_cast<Eigen::Index>(a.unknowns);
-  Eigen::SparseMatrix<double> normal(size, size);
-  normal.setFromTriplets(triplets.begin(), triplets.end());
-  triplets.clear();
-  triplets.shrink_to_fit();
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(normal);
-  if (solver.info() != Eigen::Success)
-    throw Invalid_input(std::string("fit: the ") + what + " system could not be factorized");
-  const Eigen::MatrixXd x = solver.solve(rhs);
-  for (Slot s : spline.free_slots()) {
-    if (a.column[s] < 0)
-      continue;
-    std::array<FT, std::size_t(D)> c;
-    for (int d = 0; d < D; ++d) {
-      if (!std::isfinite(x(a.column[s], d)))
-        throw Invalid_input(std::string("fit: the ") + what + " system is singular");
-      c[std::size_t(d)] = FT(x(a.column[s], d));
-    }
-    spline.set_free_value(s, Value_traits<Value>::from_coordinates(c));
-  }
-}
-
-// Least-squares choice of the free values (Fit::LEAST_SQUARES): corners fixed to the data,
-// the free slots for which fixed(s, value) is true to that value, then min sum_s |value(s) -
-// target(s)|^2 over all slots by the normal equations.
-template <class GeomTraits, class Value, class Target, class Fixed>
-void least_squares_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
-                               const std::vector<Value>& values, const Target& target,
-                               const Fixed& fixed) {
-  using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
-  using Traits = Value_traits<Value>;
-  constexpr int D = Traits::dimension;
-  const auto a = affine_slots(spline, values, true, fixed);
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Eigen::Index(a.unknowns), D);
-  for (std::size_t s = 0; s < spline.number_of_slots(); ++s) {
-    const Value t = target(static_cast<Slot>(s));
-    for (const auto& [i, c] : a.rows[s]) {
-      for (const auto& [j, b] : a.rows[s])
-        triplets.emplace_back(i, j, c * b);
-      for (int d = 0; d < D; ++d)
-        rhs(i, d) +=
-            c * (CGAL::to_double(Traits::coordinate(t, d)) - a.constant[s][std::size_t(d)]);
-    }
-  }
-  set_solved_free_values(spline, a, triplets, rhs, "least-squares");
-}
-
 // The weight of a triangle's energy in the minimal-energy fits: 1, except for thin
 // triangles (shape quality q = 4 sqrt(3) area / sum of squared edges below 0.1, about 1:17),
 // (q / 0.1)^3. A thin triangle's energy grows as the inverse cube of its thinness; at full
@@ -294,23 +249,213 @@ double thin_triangle_weight(const Point_2& p, const Point_2& q, const Point_2& r
   return quality >= 0.1 ? 1.0 : std::pow(quality / 0.1, 3);
 }
 
+// The quadratic objectives of the least-squares and minimal-energy fits, as a sum of face
+// terms in the slot values s = R x + c (affine_slots()):
+//   energy_weight[f] * E_f(s)  (thin-plate energy of face f's patch; skipped when 0), and
+//   misfit_weight * |s_t - target_t|^2 for the misfit slots t that face f owns (each slot
+//   is owned by the first face containing it).
+// It is minimised by schwarz_minimise(): one direct solve up to options.direct_limit
+// unknowns, overlapping windows beyond. Unknowns start from initial(s) (the windows' first
+// sweep sees them); the result is written to the free slots, converted to FT.
+template <class GeomTraits, class Value, class Initial>
+Schwarz_statistics
+minimise_slot_quadratic(C1_quintic_spline<GeomTraits, Value>& spline, const Affine_slots<Value>& a,
+                        const std::vector<double>& energy_weight,
+                        const std::vector<std::pair<std::uint32_t, Value>>& misfits,
+                        double misfit_weight, const Initial& initial,
+                        const Schwarz_options& options, int default_sweeps, const char* what) {
+  using FT = typename GeomTraits::FT;
+  using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
+  using Traits = Value_traits<Value>;
+  using Point = CGAL::Simple_cartesian<double>::Point_2;
+  constexpr int D = Traits::dimension;
+  const auto& domain = spline.domain();
+  for (const auto& [s, value] : a.fixed)
+    spline.set_free_value(s, value);
+  if (a.unknowns == 0)
+    return {};
+  const auto indices = bernstein_indices(5);
+  constexpr std::size_t n = 21;
+  const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  // slots' owning faces; misfit targets by face
+  std::vector<std::uint32_t> owning_face(spline.number_of_slots(), none);
+  for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f)
+    for (const auto& index : indices) {
+      const Slot s = spline.slot(f, index);
+      if (owning_face[s] == none)
+        owning_face[s] = f;
+    }
+  std::vector<std::size_t> misfit_start(domain.number_of_faces() + 1, 0);
+  std::vector<std::pair<Slot, std::array<double, D>>> face_misfits(misfits.size());
+  for (const auto& m : misfits)
+    ++misfit_start[owning_face[m.first] + 1];
+  for (std::size_t f = 0; f < domain.number_of_faces(); ++f)
+    misfit_start[f + 1] += misfit_start[f];
+  {
+    std::vector<std::size_t> next(misfit_start.begin(), misfit_start.end() - 1);
+    for (const auto& [s, t] : misfits) {
+      std::array<double, D> target;
+      for (int d = 0; d < D; ++d)
+        target[std::size_t(d)] = CGAL::to_double(Traits::coordinate(t, d));
+      face_misfits[next[owning_face[s]]++] = {s, target};
+    }
+  }
+  // the owner of an unknown: the vertex of largest multiplicity of its slot's label
+  // (smallest index on ties)
+  std::vector<Slot> slot_of(a.unknowns);
+  std::vector<std::uint32_t> owner(a.unknowns);
+  Eigen::MatrixXd x(Eigen::Index(a.unknowns), D);
+  for (Slot s : spline.free_slots()) {
+    if (a.column[s] < 0)
+      continue;
+    const auto j = std::size_t(a.column[s]);
+    slot_of[j] = s;
+    int largest = -1;
+    for (const auto& [v, m] : spline.polar_label(s))
+      if (m > largest || (m == largest && v < owner[j])) {
+        largest = m;
+        owner[j] = std::uint32_t(v);
+      }
+    const Value start = initial(s);
+    for (int d = 0; d < D; ++d)
+      x(Eigen::Index(j), d) = CGAL::to_double(Traits::coordinate(start, d));
+  }
+  auto unknowns_of = [&](std::uint32_t f, std::vector<std::uint32_t>& out) {
+    for (const auto& index : indices)
+      for (const auto& entry : a.rows[spline.slot(f, index)])
+        out.push_back(std::uint32_t(entry.first));
+  };
+  std::vector<int> columns;
+  using Dense = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  Dense L(10, Eigen::Index(n)), M(10, 10);
+  Eigen::MatrixXd R, C, X, MX, H, B;
+  auto assemble = [&](std::uint32_t f, const std::vector<int>& local, const Eigen::MatrixXd& at,
+                      std::vector<Eigen::Triplet<double>>& triplets, Eigen::MatrixXd& rhs) {
+    std::array<Slot, n> slot;
+    columns.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      slot[i] = spline.slot(f, indices[i]);
+      for (const auto& entry : a.rows[slot[i]])
+        if (local[std::size_t(entry.first)] >= 0)
+          columns.push_back(local[std::size_t(entry.first)]);
+    }
+    if (columns.empty())
+      return;
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+    const Eigen::Index k = Eigen::Index(columns.size());
+    // slot values = R (window unknowns) + C (constants and the other unknowns' values)
+    R.setZero(Eigen::Index(n), k);
+    C.setZero(Eigen::Index(n), D);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int d = 0; d < D; ++d)
+        C(Eigen::Index(i), d) = a.constant[slot[i]][std::size_t(d)];
+      for (const auto& [j, c] : a.rows[slot[i]]) {
+        const int l = local[std::size_t(j)];
+        if (l >= 0)
+          R(Eigen::Index(i),
+            std::lower_bound(columns.begin(), columns.end(), l) - columns.begin()) += c;
+        else
+          C.row(Eigen::Index(i)) += c * at.row(j);
+      }
+    }
+    H.setZero(k, k);
+    B.setZero(k, D);
+    if (energy_weight[f] > 0) {
+      const auto& t = domain.face(f);
+      auto point = [&](std::size_t i) {
+        const auto& p = domain.point(t[i]);
+        return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+      };
+      // Differences first (L R, L C), then squares: forming the Gram matrix first loses
+      // thin triangles' energy to cancellation in double.
+      const auto factors = thin_plate_energy_factors(5, point(0), point(1), point(2));
+      for (Eigen::Index a1 = 0; a1 < 10; ++a1)
+        for (Eigen::Index a2 = 0; a2 < 10; ++a2)
+          M(a1, a2) = energy_weight[f] * factors.gram[std::size_t(a1 * 10 + a2)];
+      for (int p = 0; p < 3; ++p) {
+        for (Eigen::Index a1 = 0; a1 < 10; ++a1)
+          for (Eigen::Index i = 0; i < Eigen::Index(n); ++i)
+            L(a1, i) = factors.second[std::size_t(p)][std::size_t(a1) * n + std::size_t(i)];
+        const double w = factors.weight[std::size_t(p)];
+        X.noalias() = L * R;
+        MX.noalias() = M * X;
+        H.noalias() += w * (X.transpose() * MX);
+        B.noalias() -= w * (MX.transpose() * (L * C));
+      }
+    }
+    for (std::size_t m = misfit_start[f]; m < misfit_start[f + 1]; ++m) {
+      const auto& [s, target] = face_misfits[m];
+      const std::size_t i = std::size_t(std::find(slot.begin(), slot.end(), s) - slot.begin());
+      const auto r = R.row(Eigen::Index(i));
+      H.noalias() += misfit_weight * (r.transpose() * r);
+      for (int d = 0; d < D; ++d)
+        B.col(d) +=
+            misfit_weight * (target[std::size_t(d)] - C(Eigen::Index(i), d)) * r.transpose();
+    }
+    for (Eigen::Index i = 0; i < k; ++i) {
+      for (Eigen::Index j = 0; j < k; ++j)
+        if (H(i, j) != 0)
+          triplets.emplace_back(columns[std::size_t(i)], columns[std::size_t(j)], H(i, j));
+      rhs.row(columns[std::size_t(i)]) += B.row(i);
+    }
+  };
+  auto neighbours = [&](std::uint32_t v, std::vector<std::uint32_t>& out) {
+    const auto [begin, end] = domain.neighbours(v);
+    for (auto w = begin; w != end; ++w)
+      out.push_back(std::uint32_t(*w));
+  };
+  auto position = [&](std::uint32_t v) {
+    const auto& p = domain.point(v);
+    return std::array<double, 2>{{CGAL::to_double(p.x()), CGAL::to_double(p.y())}};
+  };
+  const Schwarz_statistics statistics =
+      schwarz_minimise(domain.number_of_vertices(), owner, domain.number_of_faces(), unknowns_of,
+                       assemble, neighbours, position, x, options, default_sweeps, what);
+  for (std::size_t j = 0; j < a.unknowns; ++j) {
+    std::array<FT, std::size_t(D)> c;
+    for (int d = 0; d < D; ++d)
+      c[std::size_t(d)] = FT(x(Eigen::Index(j), d));
+    spline.set_free_value(slot_of[j], Value_traits<Value>::from_coordinates(c));
+  }
+  return statistics;
+}
+
+// Least-squares choice of the free values (Fit::LEAST_SQUARES): corners fixed to the data,
+// the free slots for which fixed(s, value) is true to that value, then min sum_s |value(s) -
+// target(s)|^2 over all slots.
+template <class GeomTraits, class Value, class Target, class Fixed>
+Schwarz_statistics least_squares_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
+                                             const std::vector<Value>& values, const Target& target,
+                                             const Fixed& fixed,
+                                             const Schwarz_options& options = {}) {
+  using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
+  const auto a = affine_slots(spline, values, true, fixed);
+  std::vector<std::pair<std::uint32_t, Value>> misfits;
+  misfits.reserve(spline.number_of_slots());
+  for (std::size_t s = 0; s < spline.number_of_slots(); ++s)
+    if (!a.rows[s].empty())
+      misfits.emplace_back(std::uint32_t(s), target(static_cast<Slot>(s)));
+  return minimise_slot_quadratic(spline, a,
+                                 std::vector<double>(spline.domain().number_of_faces(), 0), misfits,
+                                 1.0, target, options, 1, "least-squares");
+}
+
 // Minimal thin-plate energy (Fit::MINIMAL_ENERGY): corners fixed to the data, the free slots
 // for which fixed(s, value) is true fixed to that value, and min sum_f b_f^T G_f b_f over
 // the others; with smoothing > 0 the corners are unknowns too and the objective is
 // sum_v |s(v) - z_v|^2 + smoothing * h^2 * energy, h^2 the domain's area per vertex (so
 // that smoothing is dimensionless: invariant under scaling of x and y). Faces whose
-// control points are all fixed only add a constant and are skipped.
-template <class GeomTraits, class Value, class Fixed>
-void minimal_energy_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
-                                const std::vector<Value>& values, double smoothing,
-                                const Fixed& fixed) {
-  using Traits = Value_traits<Value>;
-  constexpr int D = Traits::dimension;
+// control points are all fixed only add a constant and are skipped. The unknowns start
+// from initial(s) (used only by the windows of large problems).
+template <class GeomTraits, class Value, class Fixed, class Initial>
+Schwarz_statistics minimal_energy_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
+                                              const std::vector<Value>& values, double smoothing,
+                                              const Fixed& fixed, const Initial& initial,
+                                              const Schwarz_options& options = {}) {
   const auto& domain = spline.domain();
   const bool interpolating = !(smoothing > 0);
   const auto a = affine_slots(spline, values, interpolating, fixed);
-  const auto indices = bernstein_indices(5);
-  const std::size_t n = indices.size();
   double weight = 1;
   if (!interpolating) {
     double area = 0;
@@ -323,81 +468,20 @@ void minimal_energy_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
     }
     weight = smoothing * area / double(domain.number_of_vertices());
   }
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Eigen::Index(a.unknowns), D);
-  std::vector<int> local;
-  using Dense = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  Dense L(10, Eigen::Index(n)), M(10, 10);
-  Eigen::MatrixXd R, X, MX, H, B;
+  std::vector<double> energy_weight(domain.number_of_faces());
   for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
-    bool all_fixed = true;
-    for (std::size_t i = 0; i < n && all_fixed; ++i)
-      all_fixed = a.rows[spline.slot(f, indices[i])].empty();
-    if (all_fixed)
-      continue;
     const auto& t = domain.face(f);
-    // Differences first (L R, L C), then squares: forming the Gram matrix first loses
-    // thin triangles' energy to cancellation in double.
-    const auto factors =
-        thin_plate_energy_factors(5, domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
-    const double face_weight =
+    energy_weight[f] =
         weight * thin_triangle_weight(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
-    std::array<std::uint32_t, 21> slot;
-    local.clear();
-    for (std::size_t i = 0; i < n; ++i) {
-      slot[i] = spline.slot(f, indices[i]);
-      for (const auto& entry : a.rows[slot[i]])
-        local.push_back(entry.first);
-    }
-    std::sort(local.begin(), local.end());
-    local.erase(std::unique(local.begin(), local.end()), local.end());
-    const Eigen::Index k = Eigen::Index(local.size());
-    R.setZero(Eigen::Index(n), k);
-    Eigen::MatrixXd C(Eigen::Index(n), D);
-    for (std::size_t i = 0; i < n; ++i) {
-      for (const auto& [j, c] : a.rows[slot[i]]) {
-        const auto at = std::lower_bound(local.begin(), local.end(), j) - local.begin();
-        R(Eigen::Index(i), at) += c;
-      }
-      for (int d = 0; d < D; ++d)
-        C(Eigen::Index(i), d) = a.constant[slot[i]][std::size_t(d)];
-    }
-    for (Eigen::Index a1 = 0; a1 < 10; ++a1)
-      for (Eigen::Index a2 = 0; a2 < 10; ++a2)
-        M(a1, a2) = face_weight * CGAL::to_double(factors.gram[std::size_t(a1 * 10 + a2)]);
-    H.setZero(k, k);
-    B.setZero(k, D);
-    for (int p = 0; p < 3; ++p) {
-      for (Eigen::Index a1 = 0; a1 < 10; ++a1)
-        for (Eigen::Index i = 0; i < Eigen::Index(n); ++i)
-          L(a1, i) =
-              CGAL::to_double(factors.second[std::size_t(p)][std::size_t(a1) * n + std::size_t(i)]);
-      const double w = factors.weight[std::size_t(p)];
-      X.noalias() = L * R;
-      MX.noalias() = M * X;
-      H.noalias() += w * (X.transpose() * MX);
-      B.noalias() -= w * (MX.transpose() * (L * C));
-    }
-    const Eigen::MatrixXd& b = B;
-    for (Eigen::Index i = 0; i < k; ++i) {
-      for (Eigen::Index j = 0; j < k; ++j)
-        triplets.emplace_back(local[std::size_t(i)], local[std::size_t(j)], H(i, j));
-      for (int d = 0; d < D; ++d)
-        rhs(local[std::size_t(i)], d) += b(i, d);
-    }
   }
+  // s(v) is the corner slot of v, an unknown when smoothing
+  std::vector<std::pair<std::uint32_t, Value>> misfits;
   if (!interpolating)
-    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v) {
-      // s(v) is the corner slot of v, an unknown when smoothing
-      for (const auto& [i, c] : a.rows[v]) {
-        for (const auto& [j, b] : a.rows[v])
-          triplets.emplace_back(i, j, c * b);
-        for (int d = 0; d < D; ++d)
-          rhs(i, d) += c * (CGAL::to_double(Traits::coordinate(values[v], d)) -
-                            a.constant[v][std::size_t(d)]);
-      }
-    }
-  set_solved_free_values(spline, a, triplets, rhs, "minimal-energy");
+    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+      if (!a.rows[v].empty())
+        misfits.emplace_back(v, values[v]);
+  return minimise_slot_quadratic(spline, a, energy_weight, misfits, 1.0, initial, options, 2,
+                                 "minimal-energy");
 }
 
 // Resolution (Local_polynomials::resolution()) below which a vertex's polynomial is trusted
@@ -407,9 +491,6 @@ void minimal_energy_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
 inline std::pair<double, double> adaptive_resolution_thresholds() {
   return {0.1, 0.5};
 }
-// The largest number of untrusted vertices for which the Adaptive fit solves the energy
-// problem (about 4 s and 400 MB measured on scattered noisy data, Eigen's SimplicialLDLT).
-constexpr std::size_t adaptive_energy_vertex_limit = 10000;
 // Rings around the untrusted vertices over which the Adaptive fit's energy solve extends.
 constexpr int adaptive_energy_margin_rings = 3;
 
@@ -418,7 +499,8 @@ constexpr int adaptive_energy_margin_rings = 3;
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief what `fit_vertex_data()` did: the degrees of the local polynomials
-  (`LOCAL_POLYNOMIAL` and `LEAST_SQUARES` fits; all zero otherwise).
+  (`LOCAL_POLYNOMIAL`, `LEAST_SQUARES` and `ADAPTIVE` fits, and `MINIMAL_ENERGY` beyond
+  40000 unknowns, whose windows start from them; all zero otherwise).
 */
 struct Fit_statistics {
   /// `vertices_by_degree[d]`: the number of vertices whose local polynomial has degree `d`
@@ -426,48 +508,21 @@ struct Fit_statistics {
   /// `ADAPTIVE` fit: the number of vertices whose polynomial is trusted fully (`[0]`),
   /// blended with the minimal-energy values (`[1]`), or not used at all (`[2]`)
   std::array<std::size_t, 3> vertices_by_trust{};
-  /// `ADAPTIVE` fit: `true` if more than 10^4 vertices were not fully trusted, so that the
-  /// global energy solve was skipped and every vertex followed its polynomial, as in
-  /// `LOCAL_POLYNOMIAL`
+  /// always `false` (kept for compatibility): the `ADAPTIVE` fit's energy solve used to be
+  /// skipped beyond \f$10^4\f$ untrusted vertices; it is now linear in their number and
+  /// always done
   bool energy_skipped = false;
 };
 
-/*!
-  \ingroup PkgTriangularSplineSplines
-  \brief sets every free control point of `spline` from the data `values` (one per domain
-  vertex) according to `fit`, then propagates, and returns what it did.
+namespace internal {
 
-  Every mode reproduces data sampled from a linear function exactly (every prescribed point
-  is then the linear function's polar value, and propagation preserves it; for
-  `LOCAL_POLYNOMIAL` and `LEAST_SQUARES` with `local_degree` at least 1).
-  `local_degree` is the largest degree of the local polynomials of `LOCAL_POLYNOMIAL`,
-  `LEAST_SQUARES` and `ADAPTIVE` (0..5); `selection` how they choose it. `smoothing` (at least
-  0) is the \f$\lambda\f$ of `MINIMAL_ENERGY`; 0 interpolates. `given_gradients` (one per
-  vertex, or empty to estimate them) are interpolated by every fit but `APPROXIMATE`: each
-  star point \f$f(v^4 w)\f$ becomes \f$z_v + \nabla z_v \cdot (w - v)/5\f$, so the spline's
-  gradient at every vertex is the given one (exactly with an exact number type); the other
-  free points follow the fit.
-  \tparam GeomTraits a model of `Kernel`
-  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
-  \throws Invalid_input if `values` or `given_gradients` has the wrong size or a non-finite
-  value, if `smoothing` is negative or not finite or given to another fit than
-  `MINIMAL_ENERGY` or with gradients, if gradients are given to `APPROXIMATE`, or if a fit
-  other than `APPROXIMATE` is asked of a spline whose corner points are not free.
-  \param spline the spline whose free control points are set
-  \param values the data values, one per domain vertex
-  \param fit the fitting mode
-  \param local_degree the largest degree of the local polynomials
-  \param selection the rule choosing the degree of each local polynomial
-  \param smoothing the weight of the smoothing term
-  \param given_gradients the gradients at the vertices, one pair per domain vertex, if given
-  \returns statistics of what the fit did
-*/
+// fit_vertex_data() with the solver's options, and what the solver did (tests, benchmarks).
 template <class GeomTraits, class Value>
-Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
-                               const std::vector<Value>& values, Fit fit, int local_degree = 3,
-                               Degree_selection selection = Degree_selection::CROSS_VALIDATION,
-                               double smoothing = 0,
-                               const std::vector<std::array<Value, 2>>& given_gradients = {}) {
+Fit_statistics
+fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<Value>& values,
+                Fit fit, int local_degree, Degree_selection selection, double smoothing,
+                const std::vector<std::array<Value, 2>>& given_gradients,
+                const Schwarz_options& options, Schwarz_statistics* solver = nullptr) {
   using FT = typename GeomTraits::FT;
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   const auto& domain = spline.domain();
@@ -512,7 +567,10 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     return true;
   };
   std::optional<Local_polynomials<GeomTraits, Value>> local;
-  if (fit == Fit::LOCAL_POLYNOMIAL || fit == Fit::LEAST_SQUARES || fit == Fit::ADAPTIVE)
+  // A windowed energy solve starts from the local polynomials' values: the first sweep's
+  // windows see them beyond their margins.
+  if (fit == Fit::LOCAL_POLYNOMIAL || fit == Fit::LEAST_SQUARES || fit == Fit::ADAPTIVE ||
+      (fit == Fit::MINIMAL_ENERGY && spline.number_of_free_parameters() > options.direct_limit))
     local.emplace(domain, values, local_degree, selection);
   Fit_statistics statistics;
   if (local)
@@ -573,15 +631,16 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       trust[v] = r <= low ? 1.0 : r >= high ? 0.0 : (high - r) / (high - low);
       ++statistics.vertices_by_trust[trust[v] >= 1 ? 0 : trust[v] > 0 ? 1 : 2];
     }
-    // The energy solve is global over the untrusted region and superlinear; beyond a
-    // bounded size the fit stays local (and says so) rather than take minutes. Fully
-    // trusted data need no solve: the fit is then Local_polynomial.
-    const std::size_t untrusted = statistics.vertices_by_trust[1] + statistics.vertices_by_trust[2];
-    statistics.energy_skipped = untrusted > internal::adaptive_energy_vertex_limit;
-    blend_energy = untrusted > 0 && !statistics.energy_skipped;
+    // Fully trusted data need no solve: the fit is then Local_polynomial. The energy solve
+    // is linear in the untrusted region's size (windows beyond options.direct_limit
+    // unknowns), so it is never skipped.
+    blend_energy = statistics.vertices_by_trust[1] + statistics.vertices_by_trust[2] > 0;
   }
+  internal::Schwarz_statistics solved;
   if (fit == Fit::MINIMAL_ENERGY) {
-    internal::minimal_energy_free_values(spline, values, smoothing, given_star);
+    solved = internal::minimal_energy_free_values(
+        spline, values, smoothing, given_star,
+        [&](Slot s) { return local ? target(s) : Value_traits<Value>::zero(); }, options);
   } else if (blend_energy) {
     auto nearest = [&](Slot s) {
       const auto label = spline.polar_label(s);
@@ -617,15 +676,18 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       }
       front.swap(next);
     }
-    internal::minimal_energy_free_values(spline, values, 0, [&](Slot s, Value& fixed) {
-      if (given_star(s, fixed))
-        return true;
-      for (std::uint32_t v : nearest(s))
-        if (ring[v] >= 0)
-          return false;
-      fixed = target(s);
-      return true;
-    });
+    solved = internal::minimal_energy_free_values(
+        spline, values, 0,
+        [&](Slot s, Value& fixed) {
+          if (given_star(s, fixed))
+            return true;
+          for (std::uint32_t v : nearest(s))
+            if (ring[v] >= 0)
+              return false;
+          fixed = target(s);
+          return true;
+        },
+        target, options);
     // Blend: each untrusted vertex's share of a slot moves from its polynomial to the
     // minimal-energy value in proportion to its distrust.
     for (Slot s : spline.free_slots()) {
@@ -661,13 +723,57 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       spline.set_free_value(s, ties.size() == 1 ? v : Value((FT(1) / FT(int(ties.size()))) * v));
     }
   } else if (fit == Fit::LEAST_SQUARES) {
-    internal::least_squares_free_values(spline, values, target, given_star);
+    solved = internal::least_squares_free_values(spline, values, target, given_star, options);
   } else {
     for (Slot s : spline.free_slots())
       spline.set_free_value(s, target(s));
   }
   spline.propagate();
+  if (solver)
+    *solver = solved;
   return statistics;
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief sets every free control point of `spline` from the data `values` (one per domain
+  vertex) according to `fit`, then propagates, and returns what it did.
+
+  Every mode reproduces data sampled from a linear function exactly (every prescribed point
+  is then the linear function's polar value, and propagation preserves it; for
+  `LOCAL_POLYNOMIAL` and `LEAST_SQUARES` with `local_degree` at least 1).
+  `local_degree` is the largest degree of the local polynomials of `LOCAL_POLYNOMIAL`,
+  `LEAST_SQUARES` and `ADAPTIVE` (0..5); `selection` how they choose it. `smoothing` (at least
+  0) is the \f$\lambda\f$ of `MINIMAL_ENERGY`; 0 interpolates. `given_gradients` (one per
+  vertex, or empty to estimate them) are interpolated by every fit but `APPROXIMATE`: each
+  star point \f$f(v^4 w)\f$ becomes \f$z_v + \nabla z_v \cdot (w - v)/5\f$, so the spline's
+  gradient at every vertex is the given one (exactly with an exact number type); the other
+  free points follow the fit.
+  \tparam GeomTraits a model of `Kernel`
+  \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric)
+  \throws Invalid_input if `values` or `given_gradients` has the wrong size or a non-finite
+  value, if `smoothing` is negative or not finite or given to another fit than
+  `MINIMAL_ENERGY` or with gradients, if gradients are given to `APPROXIMATE`, or if a fit
+  other than `APPROXIMATE` is asked of a spline whose corner points are not free.
+  \param spline the spline whose free control points are set
+  \param values the data values, one per domain vertex
+  \param fit the fitting mode
+  \param local_degree the largest degree of the local polynomials
+  \param selection the rule choosing the degree of each local polynomial
+  \param smoothing the weight of the smoothing term
+  \param given_gradients the gradients at the vertices, one pair per domain vertex, if given
+  \returns statistics of what the fit did
+*/
+template <class GeomTraits, class Value>
+Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
+                               const std::vector<Value>& values, Fit fit, int local_degree = 3,
+                               Degree_selection selection = Degree_selection::CROSS_VALIDATION,
+                               double smoothing = 0,
+                               const std::vector<std::array<Value, 2>>& given_gradients = {}) {
+  return internal::fit_vertex_data(spline, values, fit, local_degree, selection, smoothing,
+                                   given_gradients, internal::Schwarz_options());
 }
 
 } // namespace Triangular_spline
