@@ -45,26 +45,31 @@ enum class Degree_selection {
   `C1_quintic_spline` reads its control points from.
 
   Around vertex \f$v\f$ the polynomial \f$p_v\f$ of degree \f$d_v \le\f$ `max_degree`
-  interpolates the value at \f$v\f$ and fits the values at the vertices of the nearest rings
-  of the triangulation (as many rings, up to eight, as give twice the unknowns) in weighted least
-  squares (weights \f$1/|w-v|^2\f$), in the scaled local coordinates \f$(x - v)/S_v\f$, \f$S_v\f$ a
+  interpolates the value at \f$v\f$ and fits the values at the nearest data points in
+  weighted least squares (weights \f$1/|w-v|^2\f$): the first ring of the triangulation for a
+  plane, 14 points (1.5 times the unknowns of a cubic) for degrees 2 and 3, 30 (a quintic's)
+  for degrees 4 and 5, from the rings around \f$v\f$ (up to eight), nearest first, the
+  distance of a point in ring \f$r\f$ counted \f$1.5^{r-1}\f$ times (nearest points, but
+  balanced around \f$v\f$ where the data are clustered). The fits are taken in the scaled
+  local coordinates \f$(x - v)/S_v\f$, \f$S_v\f$ a
   power of two. If the data come from a polynomial of degree at most \f$d_v\f$, \f$p_v\f$ is that
   polynomial, exactly with an exact number type: this is what gives the spline its polynomial
   precision.
 
-  <b>Degree.</b> \f$d_v\f$ is the largest degree for which the fewest rings that hold
-  at least 1.5 times as many points as the fit has unknowns (all rings if none does) give a
-  well-conditioned scaled, weighted design matrix (Householder QR with the columns ordered by
-  degree: every column at a distance from the span of the previous ones of at least
-  \f$10^{-6}\f$ of its length; \f$10^{-14}\f$ for a plane). Sparse data, the boundary and points
-  near a conic lower it, down to 1 (a plane, two neighbours suffice) and 0 (a constant). The
-  decision is taken in `double` for every number type, so double and exact builds choose the same
-  degrees; the coefficients are then solved in `FT` (normal equations by exact elimination for exact
-  number types, the QR for inexact ones).
+  <b>Degree.</b> \f$d_v\f$ is the largest degree for which these points (as many as exist,
+  at least 1.5 times its unknowns) give a well-conditioned scaled, weighted design matrix
+  (Householder QR with the columns ordered by degree: every column at a distance from the span of
+  the previous ones of at least \f$10^{-6}\f$ of its length; \f$10^{-14}\f$ for a plane; where
+  the points do not determine the larger degree of a group, or one of them has leverage 1, twice
+  as many are tried first). Sparse
+  data, the boundary and points near a conic lower it, down to 1 (a plane, two neighbours suffice)
+  and 0 (a constant). The decision is taken in `double` for every number type, so double and exact
+  builds choose the same degrees; the coefficients are then solved in `FT` (normal equations by
+  exact elimination for exact number types, the QR for inexact ones).
 
   <b>Cost.</b> \f$O(V)\f$ time and memory: a bounded neighbourhood and one Householder QR
-  per set of rings (usually three), whose leading columns give the fit and the leave-one-out
-  score of every degree sharing those rings. Inexact number types fit large inputs on all
+  per set of points (three), whose leading columns give the fit and the leave-one-out score of
+  every degree sharing those points. Inexact number types fit large inputs on all
   cores.
 
   \tparam GeomTraits a model of `Kernel`
@@ -220,17 +225,21 @@ private:
       (max_supported_degree + 1) * (max_supported_degree + 2) / 2;
   static constexpr int D = Value_traits<Value>::dimension;
   static constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
-  // Interior vertices reach twice the unknowns of a quintic within three rings; corners of
+  // Interior vertices reach twice the points a quintic needs within four rings; corners of
   // the domain see a quarter of each ring and need more.
   static constexpr int max_rings = 8;
 
   struct Workspace {
-    std::vector<Index> points;         // the rings, nearest first
-    std::vector<std::size_t> ring_end; // points[0, ring_end[r]) are rings 1..r+1
-    std::vector<std::uint32_t> mark;   // BFS marks, by vertex (stamp = v + 1)
+    std::vector<Index> ring;         // the first ring, in point order (the plane's points)
+    std::vector<Index> points;       // candidates from the rings, nearest first
+    std::vector<std::uint32_t> mark; // BFS marks, by vertex (stamp = v + 1)
     // the double fits, column-major: design, rhs (reflected in place), their originals, the
     // rows of Q, leverages and fitted values
     std::vector<double> design, rhs, original, rhs_original, q, leverage, fitted;
+    std::vector<int> ring_of;      // the ring of each candidate (0: the first)
+    std::vector<double> distance2; // of the candidates, weighted by their ring
+    std::vector<std::size_t> order;
+    std::vector<Index> sorted;
   };
 
   // C(n, k) for n, k <= 5, from a table: polar values sit on the hot path of every fit (one
@@ -254,20 +263,39 @@ private:
     return m_coefficients[coefficients_per_vertex * std::size_t(v) + position(h, k)];
   }
 
-  // Rings of v by breadth-first search, up to max_rings rings or enough points for
-  // max_degree (1.5 times its unknowns, as fit_vertex() uses).
+  // The points a fit of degree d takes: 1.5 times its unknowns (a plane: 2).
+  static std::size_t needed(int d) { return d == 1 ? 2 : std::size_t((3 * unknowns(d) + 1) / 2); }
+
+  // The neighbourhood of v: its first ring (the plane's points), and candidates from the
+  // rings by breadth-first search (up to max_rings rings, until twice the points the
+  // largest degree needs), ordered by their distance from v times 1.5 per ring beyond the
+  // first. The fits take the first candidates in that order rather than whole rings: along
+  // the hull of scattered data the rings reach far along long boundary edges, the fits then
+  // bend to those far points and choose low degrees (Franke's function from 16641 random
+  // points: largest error 1.4e-3 near the hull with whole rings, 3.3e-6 now; scipy's
+  // Clough-Tocher 3.2e-4). The factor keeps the rings' balance where the data are sparse
+  // and clustered: with plain distances (factor 1) the nearest points of a vertex at the
+  // edge of a cluster all lie on one side, and its polynomial overshoots the data by 3x
+  // (60 clustered points); factor 2 loses most of the gain near the hull (1e-5).
+  static constexpr std::array<double, max_rings + 1> ring_factor2 = {
+      1,
+      2.25,
+      5.0625,
+      11.390625,
+      25.62890625,
+      57.6650390625,
+      129.746337890625,
+      291.92926025390625,
+      656.8408355712891}; // 1.5^(2 ring)
   void gather(Index v, Workspace& work) const {
     const Domain& domain = *m_domain;
     if (work.mark.size() != domain.number_of_vertices())
       work.mark.assign(domain.number_of_vertices(), 0);
     const std::uint32_t stamp = static_cast<std::uint32_t>(v) + 1;
     work.points.clear();
-    work.ring_end.clear();
+    work.ring_of.clear();
     work.mark[v] = stamp;
-    // the points the largest degree's fit needs (the lower degrees need fewer): more rings
-    // would only be traversed and sorted
-    const std::size_t wanted =
-        m_max_degree == 1 ? 2 : std::size_t((3 * unknowns(m_max_degree) + 1) / 2);
+    const std::size_t wanted = 2 * needed(m_max_degree);
     std::size_t begin = 0;
     for (int ring = 0; ring < max_rings; ++ring) {
       const std::size_t end = work.points.size();
@@ -277,6 +305,7 @@ private:
           if (work.mark[*w] != stamp) {
             work.mark[*w] = stamp;
             work.points.push_back(*w);
+            work.ring_of.push_back(ring);
           }
       };
       if (ring == 0)
@@ -284,20 +313,36 @@ private:
       else
         for (std::size_t i = begin; i < end; ++i)
           visit(work.points[i]);
+      if (ring == 0)
+        work.ring.assign(work.points.begin(), work.points.end());
       begin = end;
-      work.ring_end.push_back(work.points.size());
       if (work.points.size() >= wanted || work.points.size() == end)
         break;
     }
-    // Within a ring the order follows the triangulation; sort by index so that the
-    // rounding of the double solve does not depend on the traversal.
-    std::size_t from = 0;
-    for (std::size_t end : work.ring_end) {
-      std::sort(work.points.begin() + std::ptrdiff_t(from),
-                work.points.begin() + std::ptrdiff_t(end),
-                [&](Index a, Index b) { return point_less(a, b); });
-      from = end;
-    }
+    // Orders that do not depend on the traversal, so that neither does the double solve.
+    std::sort(work.ring.begin(), work.ring.end(),
+              [&](Index a, Index b) { return point_less(a, b); });
+    const Point_2& c = domain.point(v);
+    const double cx = CGAL::to_double(c.x()), cy = CGAL::to_double(c.y());
+    auto distance2 = [&](Index a) {
+      const double dx = CGAL::to_double(domain.point(a).x()) - cx;
+      const double dy = CGAL::to_double(domain.point(a).y()) - cy;
+      return dx * dx + dy * dy;
+    };
+    work.distance2.resize(work.points.size());
+    for (std::size_t i = 0; i < work.points.size(); ++i)
+      work.distance2[i] = distance2(work.points[i]) * ring_factor2[std::size_t(work.ring_of[i])];
+    work.order.resize(work.points.size());
+    for (std::size_t i = 0; i < work.order.size(); ++i)
+      work.order[i] = i;
+    std::sort(work.order.begin(), work.order.end(), [&](std::size_t a, std::size_t b) {
+      return work.distance2[a] < work.distance2[b] ||
+             (work.distance2[a] == work.distance2[b] && point_less(work.points[a], work.points[b]));
+    });
+    work.sorted.resize(work.points.size());
+    for (std::size_t i = 0; i < work.order.size(); ++i)
+      work.sorted[i] = work.points[work.order[i]];
+    work.points.swap(work.sorted);
   }
 
   bool point_less(Index a, Index b) const {
@@ -329,7 +374,8 @@ private:
     return (s0 + s1) + (s2 + s3);
   }
   struct Group {
-    Group() {} // no zero-filling: only the entries written are read
+    Group() {}            // no zero-filling: only the entries written are read
+    bool on_ring = false; // the first ring's points, else the nearest candidates
     std::size_t n = 0;
     double scale = 0, weight_sum = 0;
     int columns = 0; // columns factorized (a column nearly in the span of the previous ones
@@ -341,8 +387,8 @@ private:
 
   // Factorizes the weighted design of degree `d` on the first `n` points into `g`;
   // false if the points have no extent.
-  bool factorize(Index v, const std::vector<Value>& values, int d, std::size_t n, Workspace& work,
-                 Group& g) const {
+  bool factorize(Index v, const std::vector<Value>& values, const std::vector<Index>& points, int d,
+                 std::size_t n, Workspace& work, Group& g) const {
     const Domain& domain = *m_domain;
     const Point_2& center = domain.point(v);
     const double cx = CGAL::to_double(center.x()), cy = CGAL::to_double(center.y());
@@ -350,7 +396,7 @@ private:
     // exact coordinates stay dyadic multiples of the data.
     double radius2 = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const Point_2& p = domain.point(work.points[i]);
+      const Point_2& p = domain.point(points[i]);
       const double dx = CGAL::to_double(p.x()) - cx, dy = CGAL::to_double(p.y()) - cy;
       radius2 = (std::max)(radius2, dx * dx + dy * dy);
     }
@@ -367,7 +413,7 @@ private:
     double* b = work.rhs.data();
     std::array<double, 6> xp, yp;
     for (std::size_t i = 0; i < n; ++i) {
-      const Point_2& p = domain.point(work.points[i]);
+      const Point_2& p = domain.point(points[i]);
       const double xi = (CGAL::to_double(p.x()) - cx) / g.scale;
       const double eta = (CGAL::to_double(p.y()) - cy) / g.scale;
       const double w = 1 / std::sqrt(xi * xi + eta * eta); // square root of the weight
@@ -384,7 +430,7 @@ private:
           A[std::size_t(col) * n + i] = xp[std::size_t(t - k)] * yp[std::size_t(k)];
       for (int k = 0; k < D; ++k)
         b[std::size_t(k) * n + i] =
-            w * (CGAL::to_double(Value_traits<Value>::coordinate(values[work.points[i]], k)) -
+            w * (CGAL::to_double(Value_traits<Value>::coordinate(values[points[i]], k)) -
                  CGAL::to_double(Value_traits<Value>::coordinate(values[v], k)));
     }
     // kept for the rows of Q = A R^-1 and the residuals
@@ -488,6 +534,17 @@ private:
     }
   }
 
+  // Whether the first u columns of g are independent (each at a distance from the span of
+  // the previous ones of at least 1e-6 of its length).
+  static bool determined(const Group& g, int u) {
+    if (g.columns < u)
+      return false;
+    for (int k = 0; k < u; ++k)
+      if (!(g.ratio[std::size_t(k)] > 1e-6))
+        return false;
+    return true;
+  }
+
   void fit_vertex(Index v, const std::vector<Value>& values, Workspace& work) {
     coefficient(v, 0, 0) = values[v];
     if (m_max_degree == 0)
@@ -498,33 +555,25 @@ private:
       std::size_t group = 0;
       double score = 0;
     };
-    // Degree d fits the fewest rings holding at least 1.5 times its unknowns (all rings if
-    // none does; a plane needs 2 points); degrees on the same rings share one QR.
+    // A plane fits the whole first ring; degrees 2 and 3 the points the cubic needs, nearest
+    // first, and degrees 4 and 5 the quintic's (fewer where fewer exist): one QR per group.
     boost::container::static_vector<Candidate, max_supported_degree> candidates;
     boost::container::static_vector<Group, max_supported_degree> groups;
     boost::container::static_vector<double, max_supported_degree> plane_score;
     int d = 1;
     while (d <= m_max_degree) {
-      auto rings_for = [&](int degree) {
-        const int u = unknowns(degree);
-        const std::size_t needed = degree == 1 ? 2 : std::size_t((3 * u + 1) / 2);
-        std::size_t n = work.points.size();
-        for (std::size_t end : work.ring_end)
-          if (end >= needed) {
-            n = end;
-            break;
-          }
-        return n < needed ? std::size_t(0) : n;
-      };
-      const std::size_t n = rings_for(d);
-      if (n == 0)
+      const int high = d == 1 ? 1 : d <= 3 ? (std::min)(3, m_max_degree) : m_max_degree;
+      const std::vector<Index>& points = d == 1 ? work.ring : work.points;
+      const std::size_t n = d == 1 ? points.size() : (std::min)(points.size(), needed(high));
+      if (n < needed(d))
         break;
-      int top = d;
-      while (top < m_max_degree && rings_for(top + 1) == n)
-        ++top;
+      int top = high;
+      while (top > d && needed(top) > n)
+        --top;
       groups.emplace_back();
       Group& g = groups.back();
-      if (!factorize(v, values, top, n, work, g)) {
+      g.on_ring = d == 1;
+      if (!factorize(v, values, points, top, n, work, g)) {
         groups.pop_back();
         break; // no extent: no higher degree either
       }
@@ -538,10 +587,7 @@ private:
       std::array<int, max_supported_degree> degree_of{};
       for (int e = (std::max)(d, 2); e <= top; ++e) {
         const int ue = unknowns(e);
-        bool independent = g.columns >= ue;
-        for (int k = 0; independent && k < ue; ++k)
-          independent = g.ratio[std::size_t(k)] > 1e-6;
-        if (!independent)
+        if (!determined(g, ue))
           break; // the higher degrees of this group include the dependent columns
         degree_of[count - 1] = e;
         u[count++] = ue;
@@ -550,6 +596,32 @@ private:
       std::array<double, max_supported_degree + 1> s{};
       if (plane)
         scores(g, u, count, work, s);
+      // Points on few lines do not determine the group's top degree (a quintic needs them on
+      // six), and with 1.5 points per unknown one of them may fit a direction alone (its
+      // leave-one-out residual is then undefined, the score infinite): then twice the points,
+      // where they exist, before a lower degree.
+      if (d > 1 && points.size() > n &&
+          (!determined(g, unknowns(top)) || !std::isfinite(s[count - 1]))) {
+        Group more;
+        const std::size_t n2 = (std::min)(points.size(), 2 * n);
+        if (factorize(v, values, points, top, n2, work, more) && determined(more, unknowns(top))) {
+          std::array<int, max_supported_degree + 1> u2{};
+          std::size_t count2 = 0;
+          u2[count2++] = 2;
+          for (int e = (std::max)(d, 2); e <= top && determined(more, unknowns(e)); ++e)
+            u2[count2++] = unknowns(e);
+          std::array<double, max_supported_degree + 1> s2{};
+          scores(more, u2, count2, work, s2);
+          if (std::isfinite(s2[count2 - 1])) {
+            g = more;
+            u = u2;
+            count = count2;
+            s = s2;
+            for (std::size_t k = 1; k < count; ++k)
+              degree_of[k - 1] = (std::max)(d, 2) + int(k) - 1;
+          }
+        }
+      }
       plane_score.push_back(plane ? s[0] : std::numeric_limits<double>::infinity());
       if (d == 1 && (plane || exact))
         candidates.push_back(
@@ -597,7 +669,7 @@ private:
       const int degree = candidate.degree;
       m_scale[v] = FT(1) / FT(g.scale);
       if constexpr (exact) {
-        if (!solve_exact(v, values, work, g.n, degree, m_scale[v]))
+        if (!solve_exact(v, values, g.on_ring ? work.ring : work.points, g.n, degree, m_scale[v]))
           continue;
       } else {
         // back substitution R x = Q^T b on the degree's leading columns
@@ -628,14 +700,14 @@ private:
 
   // Normal equations sum w a a^T x = sum w a (z - z_v) with w = 1/|xi|^2, solved by exact
   // Gaussian elimination; false if singular (never expected after the double rank test).
-  bool solve_exact(Index v, const std::vector<Value>& values, const Workspace& work, std::size_t n,
-                   int d, const FT& inverse_scale) {
+  bool solve_exact(Index v, const std::vector<Value>& values, const std::vector<Index>& points,
+                   std::size_t n, int d, const FT& inverse_scale) {
     const int u = unknowns(d);
     const Point_2& c = m_domain->point(v);
     std::vector<std::vector<FT>> M(std::size_t(u), std::vector<FT>(std::size_t(u + D), FT(0)));
     std::vector<FT> a(static_cast<std::size_t>(u), FT(0));
     for (std::size_t i = 0; i < n; ++i) {
-      const Point_2& p = m_domain->point(work.points[i]);
+      const Point_2& p = m_domain->point(points[i]);
       const FT xi = (p.x() - c.x()) * inverse_scale, eta = (p.y() - c.y()) * inverse_scale;
       const FT w = FT(1) / (xi * xi + eta * eta);
       int col = 0;
@@ -656,7 +728,7 @@ private:
         for (int j = 0; j < D; ++j)
           M[std::size_t(r)][std::size_t(u + j)] =
               M[std::size_t(r)][std::size_t(u + j)] +
-              wa * (Value_traits<Value>::coordinate(values[work.points[i]], j) -
+              wa * (Value_traits<Value>::coordinate(values[points[i]], j) -
                     Value_traits<Value>::coordinate(values[v], j));
       }
     }
