@@ -446,8 +446,9 @@ public:
         if (!std::isfinite(height.coefficient(h, k)))
           throw Invalid_input("blending: the height of vertex " + std::to_string(v) +
                               " has a coefficient that is not finite");
-    if (height.coefficient(0, 0) != 0 || height.coefficient(1, 0) != 0 ||
-        height.coefficient(0, 1) != 0)
+    const bool linear = height.degree() >= 1; // coefficients exist up to the degree only
+    if (height.coefficient(0, 0) != 0 ||
+        (linear && (height.coefficient(1, 0) != 0 || height.coefficient(0, 1) != 0)))
       throw Invalid_input("blending: the height of vertex " + std::to_string(v) +
                           " must vanish with its gradient at the origin (interpolating the "
                           "vertex and its normal)");
@@ -947,7 +948,7 @@ private:
   struct Vertex_data {
     Vec3 position{{0, 0, 0}}, normal{{0, 0, 1}}, ex{{1, 0, 0}}, ey{{0, 1, 0}};
     double scale = 1;
-    Bivariate_polynomial height;
+    Bivariate_polynomial height{0};
     std::vector<std::size_t> neighbours;
   };
   struct Edge_data {
