@@ -209,6 +209,20 @@ std::vector<T> fang_from_powers(const std::vector<T>& w_in, const char* who) {
   return f;
 }
 
+// d + 1-th power of a Euclidean distance given by its square q: a polynomial in q when
+// d + 1 is even; where q = 0 and d + 1 is odd its jet vanishes to order d (the higher
+// derivatives do not exist there and are returned as zero).
+template <class T>
+T power_of_distance(const T& q, int order) {
+  const int e = order + 1;
+  if (e % 2 == 0)
+    return integer_power(q, e / 2);
+  if (!(value_of(q) > 0))
+    return zero_like(q);
+  using std::sqrt;
+  return integer_power(T(sqrt(q)), e);
+}
+
 template <class T>
 struct Is_std_array : std::false_type {};
 template <class T, std::size_t D>
