@@ -49,6 +49,21 @@ enum class Blending_variant {
   /// neighbourhood of every vertex. For multi-sided faces (not in the thesis) the
   /// neighbourhoods are the discs of radius 1/3 of the side around its ends, and the blend
   /// indicators are the distances to these discs.
+  ///
+  /// Eqs. 6.20/6.21 are implemented relabelled. With the labels of eq. 6.18 (\f$u\f$,
+  /// \f$v\f$, \f$1-u-v\f$ the weights of \f$V_0\f$, \f$V_1\f$, \f$V_2\f$; the side
+  /// runs from \f$V_0\f$ to \f$V_2\f$) the printed equations use \f$r_{V_0}\f$ where
+  /// \f$u + v < 1/3\f$, i.e. near \f$V_2\f$, and \f$r_{V_2}\f$ where \f$v > 2/3\f$, near
+  /// the opposite corner \f$V_1\f$; at \f$V_0\f$ they blend both maps evenly, and the
+  /// surface is then not even \f$C^1\f$ at the vertices. We read them with \f$(u, v)\f$
+  /// replaced by \f$(v, 1-u-v)\f$: \f$r_{V_0}\f$ where \f$u > 2/3\f$, \f$r_{V_2}\f$
+  /// where \f$u + v < 1/3\f$, otherwise \f$f_0 r_{V_0} + f_1 r_{V_2}\f$ with
+  /// \f$b^r = (2/3 - u,\; u + v - 1/3)\f$, which is what the text describes (the uniformly mapped
+  /// portions
+  /// at \f$V_0\f$ and \f$V_2\f$, Fig. 6.6) and what Thm. 6.2 needs. The test
+  /// `OpenSetLabels.PrintedLabelsBreakVertexContinuityOursHold`
+  /// builds both readings from the public frame maps: ours meets the vertex surfaces to
+  /// order \f$d\f$ at every corner, the printed one differs at order 1.
   OPEN_SET
 };
 
@@ -550,6 +565,10 @@ public:
     case Blending_variant::OPEN_SET: {
       std::vector<T> indicators;
       if (F.triangle) {
+        // eqs. 6.20/6.21 relabelled (see Blending_variant::OPEN_SET): eq. 6.18's u is lh
+        // (V0, the head), 1 - u - v is lt (V2, the tail); (u, v) -> (v, 1 - u - v) turns the
+        // printed "u + v < 1/3" into lh > 2/3, "v > 2/3" into lt > 2/3 and b^r into
+        // (2/3 - lh, 2/3 - lt)
         const T lh = barycentric(F, side.end_corner[0], a, b);
         const T lt = barycentric(F, side.end_corner[1], a, b);
         const double third2 = 2.0 / 3.0;
