@@ -564,6 +564,29 @@ TEST(BlendingPolygonMesh, NormalMapEqualsTheNormalProperty) {
   EXPECT_GT(max_difference(estimated, reference), 1e-6);
 }
 
+// A vertex_index_map renumbers the vertices, normals from "v:normal" included; the surface
+// is the same, bit for bit.
+TEST(BlendingPolygonMesh, VertexIndexMapRenumbersTheVertices) {
+  const Mesh mesh = TS::blending_test_mesh<Point_3>("ellipsoid");
+  const std::size_t n = mesh.number_of_vertices();
+  std::map<Vertex, std::size_t> reversed;
+  for (Vertex v : mesh.vertices())
+    reversed[v] = n - 1 - static_cast<std::size_t>(v);
+  const Blending_surface reference(mesh);
+  const Blending_surface renumbered(
+      mesh, TS::Mesh_blending_options{},
+      CGAL::parameters::vertex_index_map(boost::make_assoc_property_map(reversed)));
+  EXPECT_FALSE(renumbered.has_estimated_normals());
+  for (std::size_t v = 0; v < n; ++v) {
+    EXPECT_EQ(renumbered.vertex_position(n - 1 - v), reference.vertex_position(v)) << v;
+    EXPECT_EQ(renumbered.vertex_normal(n - 1 - v), reference.vertex_normal(v)) << v;
+  }
+  for (std::size_t f = 0; f < reference.number_of_faces(); ++f)
+    for (std::size_t c = 0; c < 3; ++c)
+      EXPECT_EQ(renumbered.face_vertex(f, c), n - 1 - reference.face_vertex(f, c));
+  EXPECT_TRUE(bitwise_equal(renumbered, reference));
+}
+
 // Bad input through the generic path: the documented Invalid_input, naming the problem.
 TEST(BlendingPolygonMesh, BadInputIsInvalidInput) {
   auto message = [](auto build) -> std::string {

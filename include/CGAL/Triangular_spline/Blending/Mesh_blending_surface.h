@@ -70,7 +70,7 @@ enum class Blending_variant {
 /*!
   \ingroup PkgTriangularSplineBlending
   \brief returns "basic", "vertex" or "open" (the names of the command-line tool).
-  \param v the index of a vertex
+  \param v the variant
   \returns "basic", "vertex" or "open" (the names of the command-line tool)
 */
 inline const char* to_string(Blending_variant v) {

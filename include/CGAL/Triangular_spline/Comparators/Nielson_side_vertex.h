@@ -131,7 +131,8 @@ public:
         m_corners[std::size_t(f)][c++] = std::size_t(v);
     }
     // the normals of Mesh_blending_surface, from the same code
-    const std::vector<Vec3> given = internal::surface_mesh_normals(m_mesh);
+    const std::vector<Vec3> given =
+        internal::surface_mesh_normals(m_mesh, get(CGAL::vertex_index, m_mesh));
     m_estimated_normals = given.empty();
     m_normal = internal::blending_vertex_normals(m_position, m_corners, degree, given, "Nielson");
     m_curves.resize(m_mesh.number_of_edges());

@@ -134,10 +134,12 @@ bool is_index_range(const Range& range, IndexMap index, std::size_t n) {
   return count == n;
 }
 
-// The property "v:normal" (the kernel's Vector_3) of a Surface_mesh by vertex index, or
-// nothing if it has none: the package's convention for normals read from files.
-template <class P>
-std::vector<std::array<double, 3>> surface_mesh_normals(const CGAL::Surface_mesh<P>& mesh) {
+// The property "v:normal" (the kernel's Vector_3) of a Surface_mesh by the vertex indices
+// of `index`, or nothing if it has none: the package's convention for normals read from
+// files.
+template <class P, class VertexIndexMap>
+std::vector<std::array<double, 3>> surface_mesh_normals(const CGAL::Surface_mesh<P>& mesh,
+                                                        VertexIndexMap index) {
   using Mesh = CGAL::Surface_mesh<P>;
   using Vector_3 = typename CGAL::Kernel_traits<P>::Kernel::Vector_3;
   std::vector<std::array<double, 3>> normals;
@@ -145,7 +147,7 @@ std::vector<std::array<double, 3>> surface_mesh_normals(const CGAL::Surface_mesh
   if (given.second) {
     normals.resize(mesh.number_of_vertices());
     for (auto v : mesh.vertices())
-      normals[static_cast<std::size_t>(v)] = to_array_3(get(given.first, v));
+      normals[static_cast<std::size_t>(get(index, v))] = to_array_3(get(given.first, v));
   }
   return normals;
 }
@@ -246,7 +248,7 @@ Blending_mesh read_blending_mesh(const PolygonMesh& mesh, const NamedParameters&
     for (auto v : vertices(mesh))
       m.given_normal[static_cast<std::size_t>(get(vim, v))] = to_array_3(get(normals, v));
   } else if constexpr (Is_surface_mesh<PolygonMesh>::value) {
-    m.given_normal = surface_mesh_normals(mesh); // garbage-free: its indices are vim's
+    m.given_normal = surface_mesh_normals(mesh, vim);
   }
   return m;
 }
