@@ -62,7 +62,7 @@ int main(int argc, char* argv[]) {
     options.order = d;
     options.variant = TS::Blending_variant::OPEN_SET;
     const TS::Mesh_blending_surface<Point_3> fang(mesh, options);
-    report("Fang d = " + std::to_string(d), fang.mesh(), TS::Mesh_blending_sampler<Point_3>(fang));
+    report("Fang d = " + std::to_string(d), mesh, TS::Mesh_blending_sampler<Point_3>(fang));
   }
 
   // Nielson's surface is tangent-plane continuous up to round-off.

@@ -339,16 +339,17 @@ Json run_blend_job(const Blend_job& job, std::ostream& out) {
   const TS::Blending_curvature curvature = TS::measure_blending_curvature(surface, job.resolution);
   timings["measure_curvature"] = clock.lap();
   // the comparison with --scheme nielson: the same measures (triangle meshes)
+  // (`mesh` is read or generated without removed elements: its indices are the surface's)
   Edge_jumps jumps;
-  const bool triangles = is_triangle_mesh(surface.mesh());
+  const bool triangles = is_triangle_mesh(mesh);
   if (triangles) {
     const TS::Mesh_blending_sampler<Point_3> sampler(surface);
-    jumps = measure_edge_jumps(surface.mesh(), sampler, job.samples);
+    jumps = measure_edge_jumps(mesh, sampler, job.samples);
     report["edge_jumps"] = edge_jumps_json(jumps, job.samples);
-    if (CGAL::is_closed(surface.mesh())) {
+    if (CGAL::is_closed(mesh)) {
       const int levels = levels_for(job.resolution);
       report["closed_measures"] = closed_measures_json(
-          TS::measure_closed_surface(surface.mesh(), sampler, job.samples, levels, false), levels);
+          TS::measure_closed_surface(mesh, sampler, job.samples, levels, false), levels);
     }
   }
   timings["measure_jumps"] = clock.lap();

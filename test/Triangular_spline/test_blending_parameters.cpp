@@ -1,12 +1,18 @@
 // Tests of the named parameters of the generalized blending (blending_parameters.h): each
 // parameter reaches its option, the vertex normal and point maps replace the mesh's own, and
-// our parameters combine with CGAL's in both orders.
+// our parameters combine with CGAL's in both orders. And the generic PolygonMesh input of
+// Mesh_blending_surface: a Polyhedron_3 gives the Surface_mesh's surface bit for bit, a
+// normal map gives the "v:normal" surface, bad input is Invalid_input.
 #include "test_support.h"
 
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
 #include <CGAL/Triangular_spline/Blending/blending_parameters.h>
 #include <CGAL/Triangular_spline/Blending/test_meshes.h>
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/properties_Polyhedron_3.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -14,7 +20,9 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -335,7 +343,7 @@ TEST(BlendingParameters, InvalidValuesThrow) {
           mesh, TSP::least_squares_degree(
                     0, TSP::vertex_surface_method(TS::Vertex_surface_method::LEAST_SQUARES))),
       TS::Invalid_input);
-  // also through the copy that holds given normals
+  // also with given normals
   EXPECT_THROW(TS::make_blending_surface(
                    mesh, TSP::blending_order(
                              -1, CGAL::parameters::vertex_normal_map(
@@ -407,6 +415,251 @@ TEST(BlendingParameters, CombinesWithCgalParameters) {
     }
   EXPECT_EQ(mixed_b.order(), 1);
   EXPECT_EQ(mixed_b.variant(), TS::Blending_variant::OPEN_SET);
+}
+
+// --- any PolygonMesh ---
+
+using Polyhedron = CGAL::Polyhedron_3<Epick>;
+using Polyhedron_vertex = Polyhedron::Vertex_handle;
+
+// A read-only property map over a std::map.
+template <class Map>
+boost::const_associative_property_map<Map> const_map(const Map& m) {
+  return boost::const_associative_property_map<Map>(m);
+}
+
+// The Polyhedron_3 of mesh arrays, its faces added by CGAL::Euler::add_face() in the order
+// to_surface_mesh() adds them (the same algorithm, so the same halfedge structure); its
+// normals, if any, in a map.
+Polyhedron to_polyhedron(const TS::Blending_mesh_data& data,
+                         std::map<Polyhedron_vertex, Vector_3>& normals) {
+  Polyhedron p;
+  std::vector<Polyhedron_vertex> vertices;
+  for (const auto& q : data.points)
+    vertices.push_back(CGAL::add_vertex(Point_3(q[0], q[1], q[2]), p));
+  for (std::size_t i = 0; i < data.normals.size(); ++i)
+    normals[vertices[i]] = Vector_3(data.normals[i][0], data.normals[i][1], data.normals[i][2]);
+  for (const auto& f : data.faces) {
+    std::vector<Polyhedron_vertex> face;
+    for (std::size_t i : f)
+      face.push_back(vertices[i]);
+    if (CGAL::Euler::add_face(face, p) == boost::graph_traits<Polyhedron>::null_face())
+      ADD_FAILURE() << "Polyhedron_3 rejected a face";
+  }
+  return p;
+}
+
+// Parameters inside every face: barycentric for triangles, inside the unit-distance disc of
+// the face frame (which the strictly convex projected polygon contains near its centre)
+// for the others.
+std::vector<std::array<double, 2>> face_samples(const Blending_surface& s, std::size_t f) {
+  if (s.face_size(f) == 3)
+    return {{{1.0 / 3, 1.0 / 3}}, {{0.2, 0.7}}, {{0.05, 0.1}}, {{0.9, 0.05}}};
+  return {{{0, 0}}, {{0.2, 0.1}}, {{-0.3, 0.25}}, {{0.05, -0.4}}};
+}
+
+::testing::AssertionResult identical(const Blending_surface& s, const Blending_surface& t) {
+  if (s.number_of_vertices() != t.number_of_vertices() ||
+      s.number_of_edges() != t.number_of_edges() || s.number_of_faces() != t.number_of_faces())
+    return ::testing::AssertionFailure() << "different numbers of elements";
+  for (std::size_t v = 0; v < s.number_of_vertices(); ++v)
+    if (s.vertex_position(v) != t.vertex_position(v) || s.vertex_normal(v) != t.vertex_normal(v) ||
+        s.vertex_scale(v) != t.vertex_scale(v))
+      return ::testing::AssertionFailure() << "vertex " << v << " differs";
+  for (std::size_t e = 0; e < s.number_of_edges(); ++e)
+    if (s.edge_vertices(e) != t.edge_vertices(e) || s.edge_sides(e) != t.edge_sides(e))
+      return ::testing::AssertionFailure() << "edge " << e << " differs";
+  for (std::size_t f = 0; f < s.number_of_faces(); ++f) {
+    if (s.face_size(f) != t.face_size(f))
+      return ::testing::AssertionFailure() << "face " << f << " differs";
+    for (std::size_t c = 0; c < s.face_size(f); ++c)
+      if (s.face_vertex(f, c) != t.face_vertex(f, c) ||
+          s.face_to_vertex_frame(f, c) != t.face_to_vertex_frame(f, c))
+        return ::testing::AssertionFailure() << "corner " << c << " of face " << f << " differs";
+    for (const auto& p : face_samples(s, f)) {
+      if (s.face_surface(f, p[0], p[1]) != t.face_surface(f, p[0], p[1]))
+        return ::testing::AssertionFailure()
+               << "face " << f << " differs at (" << p[0] << ", " << p[1] << ")";
+      const TS::Surface_derivatives a = s.derivatives(f, p[0], p[1]);
+      const TS::Surface_derivatives b = t.derivatives(f, p[0], p[1]);
+      if (a.fx != b.fx || a.fy != b.fy || a.fxx != b.fxx || a.fxy != b.fxy || a.fyy != b.fyy)
+        return ::testing::AssertionFailure() << "the derivatives of face " << f << " differ";
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// A Polyhedron_3 is read through the same BGL functions in the same order as a Surface_mesh
+// with the same halfedge structure, so the arithmetic is the same: the surfaces are equal
+// bit for bit, and so are their tessellations. Given normals (map), estimated normals,
+// borders, quads, pentagons, mixed faces; the three variants.
+TEST(BlendingPolygonMesh, PolyhedronGivesTheSurfaceMeshSurface) {
+  std::vector<TS::Mesh_blending_options> variants(3);
+  variants[1].order = 1;
+  variants[1].variant = TS::Blending_variant::BASIC;
+  variants[2].order = 3;
+  variants[2].variant = TS::Blending_variant::VERTEX_CONTINUITY;
+  variants[2].vertex_surface = TS::Vertex_surface_method::LEAST_SQUARES_NORMALS;
+  for (const char* name : {"ellipsoid", "perturbed", "franke4", "cube", "dodecahedron", "mixed"}) {
+    const TS::Blending_mesh_data data = TS::blending_test_mesh_data(name);
+    const Mesh mesh = TS::to_surface_mesh<Point_3>(data);
+    std::map<Polyhedron_vertex, Vector_3> normals;
+    const Polyhedron polyhedron = to_polyhedron(data, normals);
+    for (const TS::Mesh_blending_options& options : variants) {
+      const Blending_surface reference(mesh, options);
+      const Blending_surface from_polyhedron =
+          normals.empty() ? Blending_surface(polyhedron, options)
+                          : Blending_surface(polyhedron, options,
+                                             CGAL::parameters::vertex_normal_map(
+                                                 boost::make_assoc_property_map(normals)));
+      EXPECT_EQ(from_polyhedron.has_estimated_normals(), data.normals.empty()) << name;
+      EXPECT_TRUE(identical(from_polyhedron, reference)) << name;
+      Mesh a, b;
+      const TS::Blending_tessellation_statistics sa = reference.tessellate(a, 3);
+      const TS::Blending_tessellation_statistics sb = from_polyhedron.tessellate(b, 3);
+      ASSERT_EQ(sa.vertices, sb.vertices) << name;
+      EXPECT_EQ(sa.min_gaussian_curvature, sb.min_gaussian_curvature) << name;
+      EXPECT_EQ(sa.max_gaussian_curvature, sb.max_gaussian_curvature) << name;
+      std::size_t differing = 0;
+      for (auto v : a.vertices())
+        differing += a.point(v) != b.point(v);
+      EXPECT_EQ(differing, 0u) << name;
+    }
+  }
+  // the one-call entry point deduces the point type from the Polyhedron's point map
+  const TS::Blending_mesh_data data = TS::blending_test_mesh_data("ellipsoid");
+  std::map<Polyhedron_vertex, Vector_3> normals;
+  const Polyhedron polyhedron = to_polyhedron(data, normals);
+  const Blending_surface made = TS::make_blending_surface(
+      polyhedron, TSP::blending_order(1, CGAL::parameters::vertex_normal_map(
+                                             boost::make_assoc_property_map(normals))));
+  TS::Mesh_blending_options order1;
+  order1.order = 1;
+  EXPECT_TRUE(identical(made, Blending_surface(TS::to_surface_mesh<Point_3>(data), order1)));
+}
+
+// Normals given through vertex_normal_map are those of the property "v:normal": the same
+// surface bit for bit, on a mesh without the property.
+TEST(BlendingPolygonMesh, NormalMapEqualsTheNormalProperty) {
+  const Mesh mesh = TS::blending_test_mesh<Point_3>("ellipsoid");
+  const auto property = mesh.property_map<Vertex, Vector_3>("v:normal");
+  ASSERT_TRUE(property.second);
+  Mesh bare = mesh;
+  auto copied = bare.property_map<Vertex, Vector_3>("v:normal").first;
+  bare.remove_property_map(copied);
+  ASSERT_FALSE((bare.property_map<Vertex, Vector_3>("v:normal").second));
+  const Blending_surface reference(mesh); // the convenience constructor: "v:normal"
+  const Blending_surface from_map(bare, TS::Mesh_blending_options{},
+                                  CGAL::parameters::vertex_normal_map(property.first));
+  EXPECT_FALSE(reference.has_estimated_normals());
+  EXPECT_FALSE(from_map.has_estimated_normals());
+  EXPECT_TRUE(identical(from_map, reference));
+  // the generic constructor reads "v:normal" of a Surface_mesh as well
+  EXPECT_TRUE(identical(
+      Blending_surface(mesh, TS::Mesh_blending_options{}, CGAL::parameters::default_values()),
+      reference));
+  // without either, the normals are estimated: a different surface
+  const Blending_surface estimated(bare);
+  EXPECT_TRUE(estimated.has_estimated_normals());
+  EXPECT_GT(max_difference(estimated, reference), 1e-6);
+}
+
+// A vertex_index_map renumbers the vertices, normals from "v:normal" included; the surface
+// is the same, bit for bit.
+TEST(BlendingPolygonMesh, VertexIndexMapRenumbersTheVertices) {
+  const Mesh mesh = TS::blending_test_mesh<Point_3>("ellipsoid");
+  const std::size_t n = mesh.number_of_vertices();
+  std::map<Vertex, std::size_t> reversed;
+  for (Vertex v : mesh.vertices())
+    reversed[v] = n - 1 - static_cast<std::size_t>(v);
+  const Blending_surface reference(mesh);
+  const Blending_surface renumbered(
+      mesh, TS::Mesh_blending_options{},
+      CGAL::parameters::vertex_index_map(boost::make_assoc_property_map(reversed)));
+  EXPECT_FALSE(renumbered.has_estimated_normals());
+  for (std::size_t v = 0; v < n; ++v) {
+    EXPECT_EQ(renumbered.vertex_position(n - 1 - v), reference.vertex_position(v)) << v;
+    EXPECT_EQ(renumbered.vertex_normal(n - 1 - v), reference.vertex_normal(v)) << v;
+  }
+  for (std::size_t f = 0; f < reference.number_of_faces(); ++f)
+    for (std::size_t c = 0; c < 3; ++c)
+      EXPECT_EQ(renumbered.face_vertex(f, c), n - 1 - reference.face_vertex(f, c));
+  EXPECT_TRUE(bitwise_equal(renumbered, reference));
+}
+
+// Bad input through the generic path: the documented Invalid_input, naming the problem.
+TEST(BlendingPolygonMesh, BadInputIsInvalidInput) {
+  auto message = [](auto build) -> std::string {
+    try {
+      build();
+    } catch (const TS::Invalid_input& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  auto says = [](const std::string& what, const std::string& part) {
+    return what.find(part) != std::string::npos ? ::testing::AssertionSuccess()
+                                                : ::testing::AssertionFailure() << what;
+  };
+  const TS::Mesh_blending_options options;
+  // no faces: an empty Polyhedron_3; vertices only
+  EXPECT_TRUE(says(message([&] { Blending_surface(Polyhedron(), options); }), "no face"));
+  Mesh points_only;
+  points_only.add_vertex(Point_3(0, 0, 0));
+  points_only.add_vertex(Point_3(1, 0, 0));
+  EXPECT_TRUE(says(message([&] { Blending_surface(points_only, options); }), "no face"));
+  // a vertex without faces: not a valid polygon mesh for CGAL already
+  Mesh isolated = TS::blending_test_mesh<Point_3>("octahedron");
+  isolated.add_vertex(Point_3(5, 5, 5));
+  EXPECT_TRUE(says(
+      message([&] { Blending_surface(isolated, options, CGAL::parameters::default_values()); }),
+      "not a valid polygon mesh"));
+
+  const TS::Blending_mesh_data ico = TS::blending_test_mesh_data("icosahedron");
+  std::map<Polyhedron_vertex, Vector_3> radial;
+  const Polyhedron polyhedron = to_polyhedron(ico, radial);
+  auto with_normals = [&](const std::map<Polyhedron_vertex, Vector_3>& normals) {
+    return message([&] {
+      Blending_surface(polyhedron, options,
+                       CGAL::parameters::vertex_normal_map(const_map(normals)));
+    });
+  };
+  // zero, non-finite and reversed normals
+  std::map<Polyhedron_vertex, Vector_3> bad = radial;
+  bad.begin()->second = Vector_3(0, 0, 0);
+  EXPECT_TRUE(says(with_normals(bad), "is zero or not finite"));
+  bad.begin()->second = Vector_3(std::numeric_limits<double>::quiet_NaN(), 0, 1);
+  EXPECT_TRUE(says(with_normals(bad), "is zero or not finite"));
+  bad.begin()->second = -radial.begin()->second;
+  EXPECT_TRUE(says(with_normals(bad), "points against the orientation"));
+  // a position that is not finite, through the vertex point map
+  std::map<Polyhedron_vertex, Point_3> moved;
+  for (Polyhedron_vertex v : vertices(polyhedron))
+    moved[v] = v->point();
+  moved.begin()->second = Point_3(std::numeric_limits<double>::infinity(), 0, 0);
+  EXPECT_TRUE(says(message([&] {
+                     Blending_surface(polyhedron, options,
+                                      CGAL::parameters::vertex_point_map(const_map(moved)));
+                   }),
+                   "not finite"));
+  // faces with more than three sides are supported only where they project to strictly
+  // convex polygons
+  TS::Blending_mesh_data dart;
+  dart.points = {{{0, 0, 0}}, {{2, 0, 0}}, {{0.5, 0.5, 0}}, {{0, 2, 0}}};
+  dart.faces = {{0, 1, 2, 3}};
+  std::map<Polyhedron_vertex, Vector_3> none;
+  const Polyhedron dart_polyhedron = to_polyhedron(dart, none);
+  EXPECT_TRUE(
+      says(message([&] { Blending_surface(dart_polyhedron, options); }), "not strictly convex"));
+  // removed elements: the generic path refuses them (maps keyed on the mesh could not follow
+  // a copy); the convenience constructor builds from the collected copy, as before
+  Mesh garbage = TS::blending_test_mesh<Point_3>("pentakis");
+  CGAL::Euler::remove_face(garbage.halfedge(*garbage.faces().begin()), garbage);
+  ASSERT_TRUE(garbage.has_garbage());
+  EXPECT_TRUE(says(message([&] { TS::make_blending_surface(garbage); }), "removed elements"));
+  Mesh collected = garbage;
+  collected.collect_garbage();
+  EXPECT_TRUE(identical(Blending_surface(garbage), Blending_surface(collected)));
 }
 
 } // namespace

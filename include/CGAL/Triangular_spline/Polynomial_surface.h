@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -22,7 +23,9 @@ namespace Triangular_spline {
 
   This is the bridge between closed-form surfaces (Enneper's surface, test polynomials,
   polynomial-precision data) and Bézier nets: `to_bezier()` gives the control net over any
-  domain triangle exactly.
+  domain triangle exactly. It is also the package's one monomial-basis polynomial class
+  elsewhere: the heights of Fang's vertex surfaces are `Bivariate_polynomial`, this class
+  with `double` coefficients, evaluated on jets by `operator()`.
 
   \tparam GeomTraits a model of `Kernel`
   \tparam Value `GeomTraits::FT` (functional) or a vector type (parametric), see `Value_traits`
@@ -76,6 +79,31 @@ public:
         sum = sum + monomial * coefficient(h, k);
       }
     return sum;
+  }
+
+  /*!
+    returns \f$F(x, y)\f$ of a functional polynomial by the nested Horner scheme, on numbers
+    or on `Taylor_jet`s (the jet of \f$F\f$ then comes with it): this is how Fang's vertex
+    surfaces are evaluated with their derivatives. The rounding differs from `evaluate()`,
+    which sums the monomials; both are exact with an exact `FT`.
+    \tparam T `FT`, or a type whose values multiply and add with `FT` such as
+    `Taylor_jet<FT>`
+    \param x the \f$x\f$ coordinate
+    \param y the \f$y\f$ coordinate
+    \returns \f$F(x, y)\f$
+  */
+  template <class T>
+  T operator()(const T& x, const T& y) const {
+    static_assert(std::is_same<Value, FT>::value, "Horner evaluation of a functional polynomial");
+    // x * 0 carries the truncation order of a jet x
+    T result = x * FT(0);
+    for (int h = m_degree; h >= 0; --h) {
+      T inner = x * FT(0);
+      for (int k = m_degree - h; k >= 0; --k)
+        inner = inner * y + m_coefficients[linear_index(h, k, m_degree)];
+      result = result * x + inner;
+    }
+    return result;
   }
 
   /// returns the partial derivative \f$\partial^{p+q}F/\partial x^p\partial y^q\f$ as a

@@ -5,6 +5,7 @@
 #define CGAL_TRIANGULAR_SPLINE_DIFFERENTIAL_GEOMETRY_H
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/internal/array_vector_3.h>
 
 #include <array>
 #include <cmath>
@@ -59,14 +60,6 @@ std::array<double, 3> as_3d(const Value& v, bool is_graph_value, double graph_x,
   for (int c = 0; c < Traits::dimension && c < 3; ++c)
     r[static_cast<std::size_t>(c)] = CGAL::to_double(Traits::coordinate(v, c));
   return r;
-}
-
-inline std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-}
-
-inline double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 } // namespace internal

@@ -9,11 +9,14 @@
 #include <CGAL/Triangular_spline/Blending/vertex_surfaces.h>
 #include <CGAL/Triangular_spline/differential_geometry.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/array_vector_3.h>
+#include <CGAL/Triangular_spline/internal/blending_arithmetic.h>
+#include <CGAL/Triangular_spline/internal/blending_geometry.h>
+#include <CGAL/Triangular_spline/internal/blending_mesh.h>
 
 #include <CGAL/Kernel_traits.h>
-#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <array>
@@ -46,13 +49,28 @@ enum class Blending_variant {
   /// neighbourhood of every vertex. For multi-sided faces (not in the thesis) the
   /// neighbourhoods are the discs of radius 1/3 of the side around its ends, and the blend
   /// indicators are the distances to these discs.
+  ///
+  /// Eqs. 6.20/6.21 are implemented relabelled. With the labels of eq. 6.18 (\f$u\f$,
+  /// \f$v\f$, \f$1-u-v\f$ the weights of \f$V_0\f$, \f$V_1\f$, \f$V_2\f$; the side
+  /// runs from \f$V_0\f$ to \f$V_2\f$) the printed equations use \f$r_{V_0}\f$ where
+  /// \f$u + v < 1/3\f$, i.e. near \f$V_2\f$, and \f$r_{V_2}\f$ where \f$v > 2/3\f$, near
+  /// the opposite corner \f$V_1\f$; at \f$V_0\f$ they blend both maps evenly, and the
+  /// surface is then not even \f$C^1\f$ at the vertices. We read them with \f$(u, v)\f$
+  /// replaced by \f$(v, 1-u-v)\f$: \f$r_{V_0}\f$ where \f$u > 2/3\f$, \f$r_{V_2}\f$
+  /// where \f$u + v < 1/3\f$, otherwise \f$f_0 r_{V_0} + f_1 r_{V_2}\f$ with
+  /// \f$b^r = (2/3 - u,\; u + v - 1/3)\f$, which is what the text describes (the uniformly mapped
+  /// portions
+  /// at \f$V_0\f$ and \f$V_2\f$, Fig. 6.6) and what Thm. 6.2 needs. The test
+  /// `OpenSetLabels.PrintedLabelsBreakVertexContinuityOursHold`
+  /// builds both readings from the public frame maps: ours meets the vertex surfaces to
+  /// order \f$d\f$ at every corner, the printed one differs at order 1.
   OPEN_SET
 };
 
 /*!
   \ingroup PkgTriangularSplineBlending
   \brief returns "basic", "vertex" or "open" (the names of the command-line tool).
-  \param v the index of a vertex
+  \param v the variant
   \returns "basic", "vertex" or "open" (the names of the command-line tool)
 */
 inline const char* to_string(Blending_variant v) {
@@ -116,162 +134,6 @@ struct Blending_tessellation_statistics {
   double max_gaussian_curvature = 0; ///< largest Gaussian curvature at a vertex
 };
 
-namespace internal {
-
-using Blend_vec2 = std::array<double, 2>;
-using Blend_vec3 = std::array<double, 3>;
-
-inline Blend_vec3 sub3(const Blend_vec3& a, const Blend_vec3& b) {
-  return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
-}
-inline double dot3(const Blend_vec3& a, const Blend_vec3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline Blend_vec3 cross3(const Blend_vec3& a, const Blend_vec3& b) {
-  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-}
-inline double norm3(const Blend_vec3& a) {
-  return std::sqrt(dot3(a, a));
-}
-inline Blend_vec3 scaled3(const Blend_vec3& a, double s) {
-  return {{a[0] * s, a[1] * s, a[2] * s}};
-}
-
-// A vertex's point in double.
-template <class Mesh>
-Blend_vec3 blend_point(const Mesh& mesh, typename Mesh::Vertex_index v) {
-  const auto& p = mesh.point(v);
-  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-}
-
-// Newell's normal of a polygon: twice its vector area, exact for planar polygons.
-template <class Mesh>
-Blend_vec3 newell_normal(const Mesh& mesh, typename Mesh::Face_index f) {
-  Blend_vec3 n{{0, 0, 0}};
-  for (auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh)) {
-    const Blend_vec3 p = blend_point(mesh, mesh.source(h)), q = blend_point(mesh, mesh.target(h));
-    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-  }
-  return n;
-}
-
-// The unit vertex normals of the mesh blending constructions, by vertex index: the
-// property "v:normal" normalised if the mesh has one (it must agree with the orientation of
-// the faces), otherwise the normalised mean of the unit normals of the incident faces (Fang
-// §8.2). `estimated` tells which; `who` prefixes the error messages.
-template <class Mesh>
-std::vector<Blend_vec3> blending_vertex_normals(const Mesh& mesh, bool& estimated,
-                                                const std::string& who) {
-  using Vector_3 = typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel::Vector_3;
-  auto name = [](std::size_t v) { return "vertex " + std::to_string(v); };
-  const std::size_t V = mesh.number_of_vertices();
-  // the orientation reference: mean unit face normal
-  std::vector<Blend_vec3> sum(V, Blend_vec3{{0, 0, 0}});
-  for (auto f : mesh.faces()) {
-    Blend_vec3 n = newell_normal(mesh, f);
-    const double length = norm3(n);
-    if (!(length > 0))
-      throw Invalid_input(who + ": face " + std::to_string(static_cast<std::size_t>(f)) +
-                          " has zero area");
-    n = scaled3(n, 1 / length);
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-      for (std::size_t c = 0; c < 3; ++c)
-        sum[static_cast<std::size_t>(v)][c] += n[c];
-  }
-  auto given = mesh.template property_map<typename Mesh::Vertex_index, Vector_3>("v:normal");
-  estimated = !given.second;
-  std::vector<Blend_vec3> normals(V, Blend_vec3{{0, 0, 1}});
-  for (auto vd : mesh.vertices()) {
-    const std::size_t v = static_cast<std::size_t>(vd);
-    const double le = norm3(sum[v]);
-    Blend_vec3 n = sum[v];
-    if (given.second) {
-      const Vector_3& g = get(given.first, vd);
-      n = {{CGAL::to_double(g.x()), CGAL::to_double(g.y()), CGAL::to_double(g.z())}};
-      const double length = norm3(n);
-      if (!std::isfinite(length) || !(length > 0))
-        throw Invalid_input(who + ": the normal of " + name(v) + " is zero or not finite");
-      n = scaled3(n, 1 / length);
-      if (le > 0 && !(dot3(n, sum[v]) > 0))
-        throw Invalid_input(who + ": the normal of " + name(v) +
-                            " points against the orientation of its faces");
-    } else {
-      if (!(le > 1e-12 * std::sqrt(double(CGAL::degree(vd, mesh)))))
-        throw Invalid_input(who + ": the estimated normal of " + name(v) +
-                            " vanishes (its face normals cancel)");
-      n = scaled3(n, 1 / le);
-    }
-    normals[v] = n;
-  }
-  return normals;
-}
-
-// An affine map of the plane: (a, b) -> (m0 a + m1 b + m2, m3 a + m4 b + m5).
-struct Affine_2 {
-  std::array<double, 6> m{{1, 0, 0, 0, 1, 0}};
-
-  template <class T>
-  std::array<T, 2> operator()(const T& a, const T& b) const {
-    const T x = a * m[0] + b * m[1] + m[2];
-    const T y = a * m[3] + b * m[4] + m[5];
-    return {{x, y}};
-  }
-  double determinant() const { return m[0] * m[4] - m[1] * m[3]; }
-
-  // the affine map sending p_i to q_i
-  static Affine_2 from_points(const std::array<Blend_vec2, 3>& p,
-                              const std::array<Blend_vec2, 3>& q) {
-    const double a = p[1][0] - p[0][0], b = p[2][0] - p[0][0], c = p[1][1] - p[0][1],
-                 d = p[2][1] - p[0][1];
-    const double det = a * d - b * c;
-    if (det == 0)
-      throw Invalid_input("blending: degenerate triangle in a face domain");
-    const double ia = d / det, ib = -b / det, ic = -c / det, id = a / det;
-    const double qa = q[1][0] - q[0][0], qb = q[2][0] - q[0][0], qc = q[1][1] - q[0][1],
-                 qd = q[2][1] - q[0][1];
-    Affine_2 r;
-    r.m[0] = qa * ia + qb * ic;
-    r.m[1] = qa * ib + qb * id;
-    r.m[3] = qc * ia + qd * ic;
-    r.m[4] = qc * ib + qd * id;
-    r.m[2] = q[0][0] - r.m[0] * p[0][0] - r.m[1] * p[0][1];
-    r.m[5] = q[0][1] - r.m[3] * p[0][0] - r.m[4] * p[0][1];
-    return r;
-  }
-
-  Affine_2 inverse() const {
-    const double det = determinant();
-    if (det == 0)
-      throw Invalid_input("blending: singular affine map");
-    Affine_2 r;
-    r.m[0] = m[4] / det;
-    r.m[1] = -m[1] / det;
-    r.m[3] = -m[3] / det;
-    r.m[4] = m[0] / det;
-    r.m[2] = -(r.m[0] * m[2] + r.m[1] * m[5]);
-    r.m[5] = -(r.m[3] * m[2] + r.m[4] * m[5]);
-    return r;
-  }
-};
-
-// d + 1-th power of a Euclidean distance given by its square q: a polynomial in q when
-// d + 1 is even; where q = 0 and d + 1 is odd its jet vanishes to order d (the higher
-// derivatives do not exist there and are returned as zero).
-template <class T>
-T power_of_distance(const T& q, int order) {
-  const int e = order + 1;
-  if (e % 2 == 0)
-    return integer_power(q, e / 2);
-  if (!(value_of(q) > 0))
-    return zero_like(q);
-  using std::sqrt;
-  return integer_power(T(sqrt(q)), e);
-}
-
-} // namespace internal
-
 /*!
   \ingroup PkgTriangularSplineBlending
   \brief Fang's mesh interpolation surface (ch. 5–7): a surface through the vertices of a
@@ -312,12 +174,31 @@ T power_of_distance(const T& q, int order) {
   construction, so it is computed in `double` whatever the kernel of the input mesh (the
   kernel's points are converted with `CGAL::to_double()`).
 
-  \tparam Point_3 the point type of the input `CGAL::Surface_mesh`, of any CGAL kernel
+  The input is any `PolygonMesh` (a model of `FaceListGraph` and `HalfedgeListGraph`, such
+  as `CGAL::Surface_mesh` or `CGAL::Polyhedron_3`), read once through its property maps; the
+  surface keeps no copy of it. Vertices, edges and faces are numbered by the mesh's index
+  maps (`CGAL::get_initialized_vertex_index_map()` and its edge and face versions, or those
+  given as named parameters): for a `Surface_mesh` without removed elements the number of
+  `v` is `std::size_t(v)`. Every accessor and evaluation takes these numbers.
+
+  Where the package shares code and where not (user manual, "Software Design"): the vertex
+  heights are the package's one polynomial class (`Polynomial_surface`, via
+  `Bivariate_polynomial`), vectors and normals use the package's `std::array` helpers and
+  `surface_curvature()`. Fang's surface itself is not a network of polynomial patches (its
+  blending weights are rational with square roots, its face domains are not triangles of a
+  planar domain), so it is not a `TriangularSplineNetwork` and `tessellate()` of
+  `tessellate.h` does not apply; `tessellate_closed_surface()` applies to triangle meshes
+  through `Mesh_blending_sampler`, and this class's own `tessellate()` covers what it
+  cannot: any number of segments, faces with more than three sides, mean curvature, and
+  the vertex order of `tspline blend`'s output.
+
+  \tparam Point_3 the point type returned by `evaluate()`, of any CGAL kernel: for a mesh,
+  the value type of its vertex point map
 */
 template <class Point_3>
 class Mesh_blending_surface {
 public:
-  /// the input mesh type
+  /// the input type of the convenience constructor
   using Mesh = CGAL::Surface_mesh<Point_3>;
   /// the kernel of the points
   using Kernel = typename CGAL::Kernel_traits<Point_3>::Kernel;
@@ -331,54 +212,112 @@ public:
   using Vec2 = std::array<double, 2>;
   /// a point or vector of space
   using Vec3 = std::array<double, 3>;
-  /// the face index type of the mesh
+  /// the face index type of a `Mesh`
   using face_descriptor = typename Mesh::Face_index;
-  /// the vertex index type of the mesh
+  /// the vertex index type of a `Mesh`
   using vertex_descriptor = typename Mesh::Vertex_index;
 
   /*!
-    builds the vertex frames and surfaces and the edge and face reparameterizations.
+    builds the vertex frames and surfaces and the edge and face reparameterizations of
+    `mesh`.
 
-    The normals are those of the vertex property map `"v:normal"` (`Vector_3`) if the mesh
-    has one, otherwise the normalised mean of the unit normals of the incident faces (as
-    Fang does for the perturbed mesh, §8.2).
+    The normals are those of `vertex_normal_map` if given; otherwise, for a
+    `CGAL::Surface_mesh`, those of its vertex property `"v:normal"` (the kernel's
+    `Vector_3`) if it has one; otherwise the normalised mean of the unit normals of the
+    incident faces (as Fang does for the perturbed mesh, §8.2). Given normals need not be
+    unit vectors.
 
-    \throws Invalid_input naming the element if: the mesh has no face, is not a valid
-    polygon mesh, has an isolated or non-manifold vertex; `order` < 0; a given normal is
-    zero, not finite, or points against the orientation of the incident faces; an estimated
-    normal vanishes; all neighbours of a vertex project onto its normal line; an edge is
-    parallel to the normal of one of its vertices; the vertex surface conditions are
-    dependent; a face with more than three sides has a zero mean normal or a projection
-    that is not strictly convex (§7.1).
+    \tparam PolygonMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+    \tparam NamedParameters a sequence of named parameters
+
+    \param mesh the input mesh, closed or with borders, consistently oriented
+    \param options the blending options (order, variant, ...)
+    \param np an optional sequence of named parameters among the ones listed below
+
+    \cgalNamedParamsBegin
+      \cgalParamNBegin{vertex_point_map}
+        \cgalParamDescription{a property map associating a position to each vertex of `mesh`}
+        \cgalParamType{a model of `ReadablePropertyMap` with key type
+                       `boost::graph_traits<PolygonMesh>::%vertex_descriptor` and a value type
+                       with `x()`, `y()`, `z()` convertible by `CGAL::to_double()`}
+        \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+      \cgalParamNEnd
+      \cgalParamNBegin{vertex_normal_map}
+        \cgalParamDescription{a property map associating a normal to each vertex of `mesh`}
+        \cgalParamType{a model of `ReadablePropertyMap` with key type
+                       `boost::graph_traits<PolygonMesh>::%vertex_descriptor` and a vector value
+                       type with `x()`, `y()`, `z()`}
+        \cgalParamDefault{`"v:normal"` of a `Surface_mesh`, otherwise estimated normals}
+      \cgalParamNEnd
+      \cgalParamNBegin{vertex_index_map}
+        \cgalParamDescription{a property map associating to each vertex of `mesh` a unique
+                              index between `0` and `num_vertices(mesh) - 1`}
+        \cgalParamType{a model of `ReadablePropertyMap` with key type
+                       `boost::graph_traits<PolygonMesh>::%vertex_descriptor` and value type
+                       `std::size_t`}
+        \cgalParamDefault{an automatically indexed internal map}
+      \cgalParamNEnd
+      \cgalParamNBegin{edge_index_map}
+        \cgalParamDescription{a property map associating to each edge of `mesh` a unique index
+                              between `0` and `num_edges(mesh) - 1`}
+        \cgalParamType{a model of `ReadablePropertyMap` with key type
+                       `boost::graph_traits<PolygonMesh>::%edge_descriptor` and value type
+                       `std::size_t`}
+        \cgalParamDefault{an automatically indexed internal map}
+      \cgalParamNEnd
+      \cgalParamNBegin{face_index_map}
+        \cgalParamDescription{a property map associating to each face of `mesh` a unique index
+                              between `0` and `num_faces(mesh) - 1`}
+        \cgalParamType{a model of `ReadablePropertyMap` with key type
+                       `boost::graph_traits<PolygonMesh>::%face_descriptor` and value type
+                       `std::size_t`}
+        \cgalParamDefault{an automatically indexed internal map}
+      \cgalParamNEnd
+    \cgalNamedParamsEnd
+
+    \throws Invalid_input naming the element if: `order` < 0 or a degree of the vertex
+    surfaces is too small; the mesh has no face, is not a valid polygon mesh, is a
+    `Surface_mesh` with removed elements, has an isolated or non-manifold vertex, a
+    coordinate that is not finite, or index maps that are not \f$0, \dots, n - 1\f$; a
+    face has zero area; a normal is zero, not finite, or points against the orientation of
+    the incident faces; an estimated normal vanishes; all neighbours of a vertex project
+    onto its normal line; an edge is parallel to the normal of one of its vertices; the
+    vertex surface conditions are dependent; a face with more than three sides has a zero
+    mean normal or a projection that is not strictly convex (§7.1).
+  */
+  template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+  Mesh_blending_surface(const PolygonMesh& mesh, const Mesh_blending_options& options,
+                        const NamedParameters& np = CGAL::parameters::default_values())
+      : m_options(options) {
+    check_options();
+    build(internal::read_blending_mesh(mesh, np, "blending"));
+  }
+
+  /*!
+    builds the surface of a `CGAL::Surface_mesh` with its `"v:normal"` property if it has
+    one (see the generic constructor). A mesh with removed elements is accepted: the surface
+    is built from a copy with its garbage collected, and its indices are that copy's (those
+    `collect_garbage()` gives).
+    \throws Invalid_input as the generic constructor
     \param mesh the input mesh
     \param options the blending options (order, variant, ...)
   */
   explicit Mesh_blending_surface(const Mesh& mesh, const Mesh_blending_options& options = {})
-      : m_mesh(mesh), m_options(options) {
-    if (options.order < 0)
-      throw Invalid_input("blending: the blending order d must be non-negative, got " +
-                          std::to_string(options.order));
-    if (options.vertex_surface == Vertex_surface_method::LEAST_SQUARES &&
-        options.least_squares_degree < 1)
-      throw Invalid_input("blending: the least-squares degree must be at least 1");
-    if (options.vertex_surface == Vertex_surface_method::LEAST_SQUARES_NORMALS &&
-        options.normals_degree < 2)
-      throw Invalid_input("blending: the degree of the vertex surfaces with normals must be at "
-                          "least 2");
-    m_mesh.collect_garbage();
-    check_mesh();
-    compute_normals();
-    build_vertices();
-    build_edges();
-    build_faces();
+      : m_options(options) {
+    check_options();
+    if (mesh.has_garbage()) {
+      Mesh collected(mesh);
+      collected.collect_garbage();
+      build(
+          internal::read_blending_mesh(collected, CGAL::parameters::default_values(), "blending"));
+    } else {
+      build(internal::read_blending_mesh(mesh, CGAL::parameters::default_values(), "blending"));
+    }
   }
 
   /// \name Access
   /// @{
 
-  /// returns the (garbage-free) copy of the input mesh that the indices refer to.
-  /// \returns the (garbage-free) copy of the input mesh that the indices refer to
-  const Mesh& mesh() const { return m_mesh; }
   /// returns the options.
   /// \returns the options
   const Mesh_blending_options& options() const { return m_options; }
@@ -446,8 +385,9 @@ public:
         if (!std::isfinite(height.coefficient(h, k)))
           throw Invalid_input("blending: the height of vertex " + std::to_string(v) +
                               " has a coefficient that is not finite");
-    if (height.coefficient(0, 0) != 0 || height.coefficient(1, 0) != 0 ||
-        height.coefficient(0, 1) != 0)
+    const bool linear = height.degree() >= 1; // coefficients exist up to the degree only
+    if (height.coefficient(0, 0) != 0 ||
+        (linear && (height.coefficient(1, 0) != 0 || height.coefficient(0, 1) != 0)))
       throw Invalid_input("blending: the height of vertex " + std::to_string(v) +
                           " must vanish with its gradient at the origin (interpolating the "
                           "vertex and its normal)");
@@ -506,8 +446,8 @@ public:
   /// \returns the projection \f$\pi_V(q)\f$ of a point to the frame of vertex `v`
   Vec2 to_vertex_frame(std::size_t v, const Vec3& q) const {
     const Vertex_data& V = m_vertices.at(v);
-    const Vec3 d = internal::sub3(q, V.position);
-    return {{internal::dot3(d, V.ex) / V.scale, internal::dot3(d, V.ey) / V.scale}};
+    const Vec3 d = internal::difference(q, V.position);
+    return {{internal::dot(d, V.ex) / V.scale, internal::dot(d, V.ey) / V.scale}};
   }
   /*!
     returns the affine map \f$A_{F,V}\f$ from the parameters of face `f` to the frame of the
@@ -625,6 +565,10 @@ public:
     case Blending_variant::OPEN_SET: {
       std::vector<T> indicators;
       if (F.triangle) {
+        // eqs. 6.20/6.21 relabelled (see Blending_variant::OPEN_SET): eq. 6.18's u is lh
+        // (V0, the head), 1 - u - v is lt (V2, the tail); (u, v) -> (v, 1 - u - v) turns the
+        // printed "u + v < 1/3" into lh > 2/3, "v > 2/3" into lt > 2/3 and b^r into
+        // (2/3 - lh, 2/3 - lt)
         const T lh = barycentric(F, side.end_corner[0], a, b);
         const T lt = barycentric(F, side.end_corner[1], a, b);
         const double third2 = 2.0 / 3.0;
@@ -717,14 +661,24 @@ public:
     return edge_surface(m_faces[f].sides[s].edge, xy[0], xy[1]);
   }
 
-  /// returns the point of the surface of face `fd` at parameter \f$(a, b)\f$.
-  /// \param fd the face of the input mesh
+  /// returns the point of the surface of face `f` at parameter \f$(a, b)\f$.
+  /// \param f the index of a face
+  /// \param a the first face parameter
+  /// \param b the second face parameter
+  /// \returns the point of the surface of face `f` at parameter \f$(a, b)\f$
+  Point_3 evaluate(std::size_t f, double a, double b) const {
+    const std::array<double, 3> p = face_surface(f, a, b);
+    return Point_3(p[0], p[1], p[2]);
+  }
+
+  /// returns the point of the surface of face `fd` of a `Surface_mesh` at parameter
+  /// \f$(a, b)\f$: `evaluate(std::size_t(fd), a, b)`.
+  /// \param fd a face of the input `Surface_mesh` (without removed elements)
   /// \param a the first face parameter
   /// \param b the second face parameter
   /// \returns the point of the surface of face `fd` at parameter \f$(a, b)\f$
   Point_3 evaluate(face_descriptor fd, double a, double b) const {
-    const std::array<double, 3> p = face_surface(static_cast<std::size_t>(fd), a, b);
-    return Point_3(p[0], p[1], p[2]);
+    return evaluate(static_cast<std::size_t>(fd), a, b);
   }
 
   /// returns the first and second derivatives of the surface of face `f` with respect to
@@ -775,6 +729,13 @@ public:
     face surfaces inherit there (exactly for the improved variants and \f$d \ge 2\f$). A
     face property `"f:input_face"` (`std::size_t`) gives the input face of each triangle.
     `out` is cleared first.
+
+    This is not `tessellate()` of `tessellate.h` (whose input is a spline network of
+    Bézier patches over a planar domain) nor `tessellate_closed_surface()` (triangles, powers
+    of two, vertices numbered face by face), which `Mesh_blending_sampler` feeds for triangle
+    meshes: it takes any `resolution`, faces with more than three sides, writes the mean
+    curvature and the input face, and numbers the vertices as above, which `tspline blend`'s
+    output files keep.
 
     \tparam OutPoint the point type of the output mesh
     \throws Invalid_input if `resolution` is outside [1, 1024]
@@ -947,7 +908,7 @@ private:
   struct Vertex_data {
     Vec3 position{{0, 0, 0}}, normal{{0, 0, 1}}, ex{{1, 0, 0}}, ey{{0, 1, 0}};
     double scale = 1;
-    Bivariate_polynomial height;
+    Bivariate_polynomial height{0};
     std::vector<std::size_t> neighbours;
   };
   struct Edge_data {
@@ -1022,58 +983,60 @@ private:
 
   static std::string vertex_name(std::size_t v) { return "vertex " + std::to_string(v); }
 
-  void check_mesh() {
-    if (m_mesh.number_of_faces() == 0)
-      throw Invalid_input("blending: the mesh has no face");
-    if (!CGAL::is_valid_polygon_mesh(m_mesh))
-      throw Invalid_input("blending: the mesh is not a valid polygon mesh");
-    for (vertex_descriptor v : m_mesh.vertices()) {
-      if (m_mesh.is_isolated(v))
-        throw Invalid_input("blending: " + vertex_name(static_cast<std::size_t>(v)) +
-                            " has no incident face");
-      if (CGAL::Polygon_mesh_processing::is_non_manifold_vertex(v, m_mesh))
-        throw Invalid_input("blending: the mesh is not manifold at " +
-                            vertex_name(static_cast<std::size_t>(v)) +
-                            " (several umbrellas of faces meet there)");
-    }
+  void check_options() const {
+    if (m_options.order < 0)
+      throw Invalid_input("blending: the blending order d must be non-negative, got " +
+                          std::to_string(m_options.order));
+    if (m_options.vertex_surface == Vertex_surface_method::LEAST_SQUARES &&
+        m_options.least_squares_degree < 1)
+      throw Invalid_input("blending: the least-squares degree must be at least 1");
+    if (m_options.vertex_surface == Vertex_surface_method::LEAST_SQUARES_NORMALS &&
+        m_options.normals_degree < 2)
+      throw Invalid_input("blending: the degree of the vertex surfaces with normals must be at "
+                          "least 2");
   }
 
-  void compute_normals() {
-    const std::size_t V = m_mesh.number_of_vertices();
+  // Everything from the mesh as read once (internal::read_blending_mesh()).
+  void build(const internal::Blending_mesh& mesh) {
+    compute_normals(mesh);
+    build_vertices(mesh);
+    build_edges(mesh);
+    build_faces(mesh);
+  }
+
+  void compute_normals(const internal::Blending_mesh& mesh) {
+    const std::size_t V = mesh.position.size();
     m_vertices.assign(V, Vertex_data());
-    for (vertex_descriptor v : m_mesh.vertices()) {
-      const Vec3 p = internal::blend_point(m_mesh, v);
-      for (double x : p)
-        if (!std::isfinite(x))
-          throw Invalid_input("blending: " + vertex_name(static_cast<std::size_t>(v)) +
-                              " has a coordinate that is not finite");
-      m_vertices[static_cast<std::size_t>(v)].position = p;
+    std::vector<std::size_t> degree(V);
+    for (std::size_t v = 0; v < V; ++v) {
+      m_vertices[v].position = mesh.position[v];
+      degree[v] = mesh.around[v].size();
     }
-    const std::vector<Vec3> normals =
-        internal::blending_vertex_normals(m_mesh, m_estimated_normals, "blending");
+    m_estimated_normals = mesh.given_normal.empty();
+    const std::vector<Vec3> normals = internal::blending_vertex_normals(
+        mesh.position, mesh.corners, degree, mesh.given_normal, "blending");
     for (std::size_t v = 0; v < V; ++v)
       m_vertices[v].normal = normals[v];
   }
 
-  void build_vertices() {
-    for (vertex_descriptor vd : m_mesh.vertices()) {
-      const std::size_t v = static_cast<std::size_t>(vd);
+  void build_vertices(const internal::Blending_mesh& mesh) {
+    for (std::size_t v = 0; v < m_vertices.size(); ++v) {
       Vertex_data& V = m_vertices[v];
-      for (vertex_descriptor w : CGAL::vertices_around_target(m_mesh.halfedge(vd), m_mesh))
-        V.neighbours.push_back(static_cast<std::size_t>(w));
+      V.neighbours = mesh.around[v];
       // x axis: the projection of the first neighbour not on the normal line
       double longest = 0;
       for (std::size_t w : V.neighbours)
-        longest = (std::max)(longest,
-                             internal::norm3(internal::sub3(m_vertices[w].position, V.position)));
+        longest = (std::max)(
+            longest, internal::norm(internal::difference(m_vertices[w].position, V.position)));
       bool found = false;
       for (std::size_t w : V.neighbours) {
-        const Vec3 d = internal::sub3(m_vertices[w].position, V.position);
-        const Vec3 t = internal::sub3(d, internal::scaled3(V.normal, internal::dot3(d, V.normal)));
-        const double length = internal::norm3(t);
+        const Vec3 d = internal::difference(m_vertices[w].position, V.position);
+        const Vec3 t =
+            internal::difference(d, internal::scaled(V.normal, internal::dot(d, V.normal)));
+        const double length = internal::norm(t);
         if (length > 1e-9 * longest) {
-          V.ex = internal::scaled3(t, 1 / length);
-          V.ey = internal::cross3(V.normal, V.ex);
+          V.ex = internal::scaled(t, 1 / length);
+          V.ey = internal::cross(V.normal, V.ex);
           V.scale = length;
           found = true;
           break;
@@ -1089,18 +1052,18 @@ private:
       at_vertex.push_back({Interpolation_condition::DX, {{0, 0}}, 0});
       at_vertex.push_back({Interpolation_condition::DY, {{0, 0}}, 0});
       for (std::size_t w : V.neighbours) {
-        const Vec3 d = internal::sub3(m_vertices[w].position, V.position);
+        const Vec3 d = internal::difference(m_vertices[w].position, V.position);
         const std::array<double, 2> at{
-            {internal::dot3(d, V.ex) / V.scale, internal::dot3(d, V.ey) / V.scale}};
+            {internal::dot(d, V.ex) / V.scale, internal::dot(d, V.ey) / V.scale}};
         neighbours.push_back(
-            {Interpolation_condition::VALUE, at, internal::dot3(d, V.normal) / V.scale});
+            {Interpolation_condition::VALUE, at, internal::dot(d, V.normal) / V.scale});
         const Vec3& n = m_vertices[w].normal;
-        const double nz = internal::dot3(n, V.normal);
+        const double nz = internal::dot(n, V.normal);
         // beyond about 75 degrees from V's normal the slope (> 3.9, infinite at 90) would
         // dominate the fit: such a normal is left out
         if (nz > 0.25) {
-          slopes.push_back({Interpolation_condition::DX, at, -internal::dot3(n, V.ex) / nz});
-          slopes.push_back({Interpolation_condition::DY, at, -internal::dot3(n, V.ey) / nz});
+          slopes.push_back({Interpolation_condition::DX, at, -internal::dot(n, V.ex) / nz});
+          slopes.push_back({Interpolation_condition::DY, at, -internal::dot(n, V.ey) / nz});
         }
       }
       try {
@@ -1143,13 +1106,12 @@ private:
     }
   }
 
-  void build_edges() {
-    m_edges.assign(m_mesh.number_of_edges(), Edge_data());
-    for (auto ed : m_mesh.edges()) {
-      Edge_data& E = m_edges[static_cast<std::size_t>(ed)];
-      const auto h = m_mesh.halfedge(ed, 0);
-      E.head = static_cast<std::size_t>(m_mesh.source(h));
-      E.tail = static_cast<std::size_t>(m_mesh.target(h));
+  void build_edges(const internal::Blending_mesh& mesh) {
+    m_edges.assign(mesh.ends.size(), Edge_data());
+    for (std::size_t e = 0; e < mesh.ends.size(); ++e) {
+      Edge_data& E = m_edges[e];
+      E.head = mesh.ends[e][0];
+      E.tail = mesh.ends[e][1];
       const std::array<std::size_t, 2> ends{{E.head, E.tail}};
       for (int end = 0; end < 2; ++end) {
         const std::size_t v = ends[static_cast<std::size_t>(end)];
@@ -1176,13 +1138,11 @@ private:
     return {{(ux * dy - uy * dx) / l2, (ux * dx + uy * dy) / l2}};
   }
 
-  void build_faces() {
-    m_faces.assign(m_mesh.number_of_faces(), Face_data());
-    for (face_descriptor fd : m_mesh.faces()) {
-      const std::size_t f = static_cast<std::size_t>(fd);
+  void build_faces(const internal::Blending_mesh& mesh) {
+    m_faces.assign(mesh.corners.size(), Face_data());
+    for (std::size_t f = 0; f < mesh.corners.size(); ++f) {
       Face_data& F = m_faces[f];
-      for (vertex_descriptor v : CGAL::vertices_around_face(m_mesh.halfedge(fd), m_mesh))
-        F.vertex.push_back(static_cast<std::size_t>(v));
+      F.vertex = mesh.corners[f];
       const std::size_t n = F.vertex.size();
       F.triangle = (n == 3);
       if (F.triangle) {
@@ -1196,10 +1156,7 @@ private:
         Side& side = F.sides[s];
         const std::size_t c0 = F.triangle ? (s + 1) % 3 : s;
         const std::size_t c1 = F.triangle ? (s + 2) % 3 : (s + 1) % n;
-        const auto hd =
-            m_mesh.halfedge(vertex_descriptor(static_cast<typename Mesh::size_type>(F.vertex[c0])),
-                            vertex_descriptor(static_cast<typename Mesh::size_type>(F.vertex[c1])));
-        side.edge = static_cast<std::size_t>(m_mesh.edge(hd));
+        side.edge = mesh.sides[f][c0]; // the face's halfedge from corner c0 to c1 = c0 + 1
         const Edge_data& E = m_edges[side.edge];
         const bool forward = (F.vertex[c0] == E.head);
         side.end_corner = {
@@ -1219,26 +1176,26 @@ private:
         origin[c] += m_vertices[v].position[c] / double(n);
         z[c] += m_vertices[v].normal[c];
       }
-    const double lz = internal::norm3(z);
+    const double lz = internal::norm(z);
     if (!(lz > 1e-12))
       throw Invalid_input("blending: face " + std::to_string(f) +
                           " has a zero mean vertex normal (§7.2.1)");
-    z = internal::scaled3(z, 1 / lz);
-    const Vec3 d = internal::sub3(m_vertices[F.vertex[0]].position, origin);
-    const Vec3 t = internal::sub3(d, internal::scaled3(z, internal::dot3(d, z)));
-    const double lt = internal::norm3(t);
+    z = internal::scaled(z, 1 / lz);
+    const Vec3 d = internal::difference(m_vertices[F.vertex[0]].position, origin);
+    const Vec3 t = internal::difference(d, internal::scaled(z, internal::dot(d, z)));
+    const double lt = internal::norm(t);
     if (!(lt > 1e-12))
       throw Invalid_input("blending: face " + std::to_string(f) +
                           ": corner 0 projects onto the centre of the face frame");
     F.origin = origin;
     F.ez = z;
-    F.ex = internal::scaled3(t, 1 / lt);
-    F.ey = internal::cross3(z, F.ex);
+    F.ex = internal::scaled(t, 1 / lt);
+    F.ey = internal::cross(z, F.ex);
     F.scale = lt;
     F.corner.clear();
     for (std::size_t v : F.vertex) {
-      const Vec3 q = internal::sub3(m_vertices[v].position, origin);
-      F.corner.push_back({{internal::dot3(q, F.ex) / lt, internal::dot3(q, F.ey) / lt}});
+      const Vec3 q = internal::difference(m_vertices[v].position, origin);
+      F.corner.push_back({{internal::dot(q, F.ex) / lt, internal::dot(q, F.ey) / lt}});
     }
     // strict convexity (counter-clockwise) of the projected polygon, with a relative margin
     for (std::size_t i = 0; i < n; ++i) {
@@ -1276,10 +1233,11 @@ private:
       const Vec3& H = m_vertices[E.head].position;
       const Vec3& T = m_vertices[E.tail].position;
       const Vec3& O = m_vertices[F.vertex[co]].position;
-      const Vec3 e = internal::sub3(T, H), o = internal::sub3(O, H);
-      const double l2 = internal::dot3(e, e);
-      const double t = internal::dot3(o, e) / l2;
-      const double h = internal::norm3(internal::sub3(o, internal::scaled3(e, t))) / std::sqrt(l2);
+      const Vec3 e = internal::difference(T, H), o = internal::difference(O, H);
+      const double l2 = internal::dot(e, e);
+      const double t = internal::dot(o, e) / l2;
+      const double h =
+          internal::norm(internal::difference(o, internal::scaled(e, t))) / std::sqrt(l2);
       // the face lies to the left of its traversal direction: x < 0 if it runs head -> tail
       const Vec2 similar{{forward ? -h : h, t}};
       side.basic = triangle_map(F, ch, ct, co, similar);
@@ -1335,7 +1293,6 @@ private:
                                            {{Vec2{{0, 0}}, Vec2{{0, 1}}, image}});
   }
 
-  Mesh m_mesh;
   Mesh_blending_options m_options;
   bool m_estimated_normals = true;
   std::size_t m_folded = 0;

@@ -8,6 +8,7 @@
 #include <CGAL/Triangular_spline/Blending/Taylor_jet.h>
 #include <CGAL/Triangular_spline/differential_geometry.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/blending_geometry.h>
 
 #include <algorithm>
 #include <array>
@@ -68,66 +69,6 @@ struct Blending_curvature {
   /// the same divided by \f$\max(|K(V)|, 1/\mathrm{size}^2)\f$
   std::array<double, 2> relative_vertex_gap{{0, 0}};
 };
-
-namespace internal {
-
-template <class Jet>
-double jet_jump(const std::array<Jet, 3>& a, const std::array<Jet, 3>& b, int k) {
-  double worst = 0;
-  for (int j = 0; j <= k; ++j) {
-    double s = 0;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const double d = a[c].derivative(k - j, j) - b[c].derivative(k - j, j);
-      s += d * d;
-    }
-    worst = (std::max)(worst, std::sqrt(s));
-  }
-  return worst;
-}
-
-template <class Jet>
-std::array<double, 3> jet_normal(const std::array<Jet, 3>& p) {
-  const std::array<double, 3> u{
-      {p[0].derivative(1, 0), p[1].derivative(1, 0), p[2].derivative(1, 0)}};
-  const std::array<double, 3> v{
-      {p[0].derivative(0, 1), p[1].derivative(0, 1), p[2].derivative(0, 1)}};
-  std::array<double, 3> n = internal::cross(u, v);
-  const double l = std::sqrt(internal::dot(n, n));
-  if (l > 0)
-    for (double& x : n)
-      x /= l;
-  return n;
-}
-
-inline double angle_deg(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-  const std::array<double, 3> c = internal::cross(a, b);
-  const double s = std::sqrt(internal::dot(c, c)), co = internal::dot(a, b);
-  return std::atan2(s, co) * 180.0 / 3.14159265358979323846;
-}
-
-template <class Point_3>
-double mesh_size(const Mesh_blending_surface<Point_3>& surface) {
-  std::array<double, 3> lo{{1e300, 1e300, 1e300}}, hi{{-1e300, -1e300, -1e300}};
-  for (std::size_t v = 0; v < surface.number_of_vertices(); ++v)
-    for (std::size_t c = 0; c < 3; ++c) {
-      lo[c] = (std::min)(lo[c], surface.vertex_position(v)[c]);
-      hi[c] = (std::max)(hi[c], surface.vertex_position(v)[c]);
-    }
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
-// sides of face f that contain corner c
-template <class Point_3>
-std::array<std::size_t, 2> sides_at_corner(const Mesh_blending_surface<Point_3>& s, std::size_t f,
-                                           std::size_t c) {
-  const std::size_t n = s.face_size(f);
-  if (n == 3)
-    return {{(c + 1) % 3, (c + 2) % 3}};
-  return {{(c + n - 1) % n, c}};
-}
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineBlending

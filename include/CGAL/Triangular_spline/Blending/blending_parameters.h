@@ -7,8 +7,9 @@
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
 #include <CGAL/Triangular_spline/internal/named_parameters.h>
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
 
 #include <type_traits>
@@ -137,16 +138,12 @@ Mesh_blending_options blending_options(const CGAL_NP_CLASS& np = parameters::def
 
 /*!
   \ingroup PkgTriangularSplineBlending
-  \brief builds the `Mesh_blending_surface` of `mesh` with the options and the vertex
-  normals and positions given as named parameters.
+  \brief builds the `Mesh_blending_surface` of `mesh` with the options and the property maps
+  given as named parameters: `Mesh_blending_surface<Point_3>(mesh, blending_options(np), np)`,
+  `Point_3` the value type of the vertex point map.
 
-  Without `vertex_normal_map` and `vertex_point_map` this is
-  `Mesh_blending_surface<Point_3>(mesh, blending_options(np))`. With either, the
-  surface is built from a copy of `mesh` whose points, or whose `"v:normal"` property
-  (created or overwritten), hold the values of the maps; the normals are then checked and
-  normalised by `Mesh_blending_surface` as if they were the mesh's own.
-
-  \tparam Point_3 the point type of the mesh, of any CGAL kernel `K`
+  \tparam PolygonMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+  (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3`, ...)
   \tparam NamedParameters a sequence of named parameters
 
   \param mesh the input polygon mesh
@@ -154,68 +151,50 @@ Mesh_blending_options blending_options(const CGAL_NP_CLASS& np = parameters::def
   ones listed below
 
   \cgalNamedParamsBegin
-    \cgalParamNBegin{vertex_normal_map}
-      \cgalParamDescription{a property map associating a normal to each vertex of `mesh`}
-      \cgalParamType{a model of `ReadablePropertyMap` with key type
-                     `Surface_mesh<Point_3>::Vertex_index` and value type `K::Vector_3`}
-      \cgalParamDefault{the property `"v:normal"` of `mesh` if it has one, otherwise normals
-                        estimated from the faces (see `Mesh_blending_surface`)}
-    \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map}
       \cgalParamDescription{a property map associating a position to each vertex of `mesh`}
       \cgalParamType{a model of `ReadablePropertyMap` with key type
-                     `Surface_mesh<Point_3>::Vertex_index` and value type `Point_3`}
-      \cgalParamDefault{the points of `mesh`}
+                     `boost::graph_traits<PolygonMesh>::%vertex_descriptor` and a point of a
+                     CGAL kernel `K` as value type}
+      \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{a property map associating a normal to each vertex of `mesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with key type
+                     `boost::graph_traits<PolygonMesh>::%vertex_descriptor` and value type
+                     `K::Vector_3`}
+      \cgalParamDefault{the property `"v:normal"` of a `Surface_mesh` if it has one,
+                        otherwise normals estimated from the faces (see
+                        `Mesh_blending_surface`)}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map, edge_index_map, face_index_map}
+      \cgalParamDescription{the numbering of the vertices, edges and faces used by the
+                            surface's accessors (see `Mesh_blending_surface`)}
+      \cgalParamDefault{automatically indexed internal maps}
     \cgalParamNEnd
   \cgalNamedParamsEnd
 
-  \throws Invalid_input as the constructor of `Mesh_blending_surface` (invalid options or
-  mesh, bad normals)
+  \throws Invalid_input as the generic constructor of `Mesh_blending_surface` (invalid
+  options or mesh, bad normals; a `Surface_mesh` with removed elements)
   \returns the blended surface
 */
-template <class Point_3, class CGAL_NP_TEMPLATE_PARAMETERS>
-Mesh_blending_surface<Point_3>
-make_blending_surface(const Surface_mesh<Point_3>& mesh,
+template <class PolygonMesh, class CGAL_NP_TEMPLATE_PARAMETERS>
+Mesh_blending_surface<typename boost::property_traits<
+    typename GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::const_type>::value_type>
+make_blending_surface(const PolygonMesh& mesh,
                       const CGAL_NP_CLASS& np = parameters::default_values()) {
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
-  using Surface = Mesh_blending_surface<Point_3>;
-  using Mesh = typename Surface::Mesh;
-  using vertex_descriptor = typename Surface::vertex_descriptor;
-  using Vector_3 = typename Surface::Vector_3;
-  constexpr bool has_normals =
-      !is_default_parameter<CGAL_NP_CLASS, CGAL::internal_np::vertex_normal_map_t>::value;
-  constexpr bool has_points =
-      !is_default_parameter<CGAL_NP_CLASS, CGAL::internal_np::vertex_point_t>::value;
-  const Mesh_blending_options options = blending_options(np);
-  if constexpr (!has_normals && !has_points) {
-    return Surface(mesh, options);
-  } else {
-    // The surface reads positions and normals from its mesh only: give it a copy holding ours
-    // (the copy keeps the vertex indices, so maps keyed on `mesh` apply to it).
-    Mesh copy(mesh);
-    if constexpr (has_points) {
-      const auto points = get_parameter(np, CGAL::internal_np::vertex_point);
-      static_assert(
-          std::is_same<std::decay_t<decltype(get(points, std::declval<vertex_descriptor>()))>,
-                       Point_3>::value,
-          "vertex_point_map: the value type must be the mesh's Point_3");
-      for (vertex_descriptor v : copy.vertices())
-        copy.point(v) = get(points, v);
-    }
-    if constexpr (has_normals) {
-      const auto given = get_parameter(np, CGAL::internal_np::vertex_normal_map);
-      // exact types: Vector_3 converts implicitly from segments, rays, ...
-      static_assert(
-          std::is_same<std::decay_t<decltype(get(given, std::declval<vertex_descriptor>()))>,
-                       Vector_3>::value,
-          "vertex_normal_map: the value type must be the kernel's Vector_3");
-      auto normals = copy.template add_property_map<vertex_descriptor, Vector_3>("v:normal").first;
-      for (vertex_descriptor v : copy.vertices())
-        put(normals, v, get(given, v));
-    }
-    return Surface(copy, options);
+  using Point_3 = typename boost::property_traits<
+      typename GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::const_type>::value_type;
+  // exact types: Vector_3 converts implicitly from segments, rays, ...
+  if constexpr (!CGAL::parameters::is_default_parameter<
+                    CGAL_NP_CLASS, CGAL::internal_np::vertex_normal_map_t>::value) {
+    using Normal_map = std::decay_t<decltype(CGAL::parameters::get_parameter(
+        np, CGAL::internal_np::vertex_normal_map))>;
+    static_assert(std::is_same<typename boost::property_traits<Normal_map>::value_type,
+                               typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3>::value,
+                  "vertex_normal_map: the value type must be the kernel's Vector_3");
   }
+  return Mesh_blending_surface<Point_3>(mesh, blending_options(np), np);
 }
 
 } // namespace Triangular_spline

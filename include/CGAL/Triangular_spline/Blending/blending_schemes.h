@@ -7,6 +7,7 @@
 #include <CGAL/Triangular_spline/Blending/Taylor_jet.h>
 #include <CGAL/Triangular_spline/Blending/blending_functions.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/blending_arithmetic.h>
 
 #include <CGAL/Kernel/global_functions.h>
 #include <CGAL/number_utils.h>
@@ -20,37 +21,6 @@
 
 namespace CGAL {
 namespace Triangular_spline {
-
-namespace internal {
-
-template <class T>
-struct Is_std_array : std::false_type {};
-template <class T, std::size_t D>
-struct Is_std_array<std::array<T, D>> : std::true_type {};
-
-// sum_i f_i * values_i for scalar values (T) or vector values (std::array<T, D>).
-template <class T, class Value>
-Value weighted_sum(const std::vector<T>& f, const std::vector<Value>& values) {
-  if (f.size() != values.size() || f.empty())
-    throw Invalid_input("blend: " + std::to_string(values.size()) + " sub-surface values for " +
-                        std::to_string(f.size()) + " blending functions");
-  if constexpr (Is_std_array<Value>::value) {
-    Value r = values[0];
-    for (std::size_t c = 0; c < r.size(); ++c)
-      r[c] = f[0] * values[0][c];
-    for (std::size_t i = 1; i < f.size(); ++i)
-      for (std::size_t c = 0; c < r.size(); ++c)
-        r[c] = r[c] + f[i] * values[i][c];
-    return r;
-  } else {
-    Value r = f[0] * values[0];
-    for (std::size_t i = 1; i < f.size(); ++i)
-      r = r + f[i] * values[i];
-    return r;
-  }
-}
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineBlending

@@ -4,7 +4,12 @@
 #ifndef CGAL_TRIANGULAR_SPLINE_BLENDING_VERTEX_SURFACES_H
 #define CGAL_TRIANGULAR_SPLINE_BLENDING_VERTEX_SURFACES_H
 
+#include <CGAL/Triangular_spline/Blending/Interpolation_condition.h>
+#include <CGAL/Triangular_spline/Polynomial_surface.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/vertex_surfaces.h>
+
+#include <CGAL/Simple_cartesian.h>
 
 #include <Eigen/Core>
 #include <Eigen/QR>
@@ -21,126 +26,16 @@ namespace Triangular_spline {
 
 /*!
   \ingroup PkgTriangularSplineBlending
-  \brief a bivariate polynomial \f$\sum_{h+k \le n} c_{h,k} x^h y^k\f$ with `double`
-  coefficients, evaluated on numbers or `Taylor_jet`s (its exact derivatives come with it).
+  \brief the height functions \f$z = P(x, y)\f$ of the vertex surfaces in their vertex frames
+  (Fang §5.2.1): the package's one bivariate polynomial class, `Polynomial_surface`, with
+  `double` coefficients, evaluated on numbers or `Taylor_jet`s by its Horner
+  `operator()` (exact derivatives come with the jets).
 
-  The height function \f$z = P(x, y)\f$ of a vertex surface in its vertex frame (Fang
-  §5.2.1).
+  Fang's frames need square roots, so the vertex surfaces are computed in `double` whatever
+  the input kernel; `CGAL::Simple_cartesian<double>` only provides that number type.
+  `coefficient(h, k)` and `set_coefficient(h, k, c)` require \f$h + k \le\f$ `degree()`.
 */
-class Bivariate_polynomial {
-public:
-  /// creates the zero polynomial of degree at most `degree`.
-  /// \param degree the degree
-  explicit Bivariate_polynomial(int degree = 0) : m_degree((std::max)(degree, 0)) {
-    m_c.assign(static_cast<std::size_t>((m_degree + 1) * (m_degree + 2) / 2), 0.0);
-  }
-
-  /// returns the degree bound.
-  /// \returns the degree bound
-  int degree() const { return m_degree; }
-
-  /// returns \f$c_{h,k}\f$ (zero outside the degree bound).
-  /// \param h the exponent \f$h\f$ of \f$x\f$
-  /// \param k the exponent \f$k\f$ of \f$y\f$
-  /// \returns \f$c_{h,k}\f$ (zero outside the degree bound)
-  double coefficient(int h, int k) const {
-    if (h < 0 || k < 0 || h + k > m_degree)
-      return 0;
-    return m_c[index(h, k)];
-  }
-
-  /// sets \f$c_{h,k}\f$, \f$h + k \le\f$ `degree()`.
-  /// \param h the exponent \f$h\f$ of \f$x\f$
-  /// \param k the exponent \f$k\f$ of \f$y\f$
-  /// \param c the new coefficient
-  void set_coefficient(int h, int k, double c) {
-    if (h < 0 || k < 0 || h + k > m_degree)
-      throw Invalid_input("Bivariate_polynomial: no monomial x^" + std::to_string(h) + " y^" +
-                          std::to_string(k) + " in degree " + std::to_string(m_degree));
-    m_c[index(h, k)] = c;
-  }
-
-  /// returns \f$P(x, y)\f$ (nested Horner scheme).
-  /// \tparam T a number type or a `Taylor_jet`
-  /// \param x the \f$x\f$ coordinate
-  /// \param y the \f$y\f$ coordinate
-  /// \returns the value \f$P(x, y)\f$
-  template <class T>
-  T operator()(const T& x, const T& y) const {
-    T result = x * 0.0;
-    for (int h = m_degree; h >= 0; --h) {
-      T inner = x * 0.0;
-      for (int k = m_degree - h; k >= 0; --k)
-        inner = inner * y + m_c[index(h, k)];
-      result = result * x + inner;
-    }
-    return result;
-  }
-
-private:
-  static std::size_t index(int h, int k) {
-    return static_cast<std::size_t>((h + k) * (h + k + 1) / 2 + k);
-  }
-  int m_degree;
-  std::vector<double> m_c;
-};
-
-/*!
-  \ingroup PkgTriangularSplineBlending
-  \brief an interpolation condition on a bivariate function: its value, or one of its first
-  partial derivatives, at a point.
-*/
-struct Interpolation_condition {
-  /// which functional
-  enum Kind {
-    VALUE, ///< \f$F(p)\f$
-    DX,    ///< \f$\partial_x F(p)\f$
-    DY     ///< \f$\partial_y F(p)\f$
-  };
-  Kind kind = VALUE;                ///< the functional
-  std::array<double, 2> at{{0, 0}}; ///< the point \f$p\f$
-  double value = 0;                 ///< the prescribed value
-};
-
-namespace internal {
-
-inline double factorial(int n) {
-  double r = 1;
-  for (int i = 2; i <= n; ++i)
-    r *= i;
-  return r;
-}
-
-inline double power(double x, int e) {
-  double r = 1;
-  for (int i = 0; i < e; ++i)
-    r *= x;
-  return r;
-}
-
-// lambda(x^h y^k) for one condition
-inline double apply_to_monomial(const Interpolation_condition& c, int h, int k) {
-  const double x = c.at[0], y = c.at[1];
-  switch (c.kind) {
-  case Interpolation_condition::VALUE:
-    return power(x, h) * power(y, k);
-  case Interpolation_condition::DX:
-    return h == 0 ? 0.0 : h * power(x, h - 1) * power(y, k);
-  case Interpolation_condition::DY:
-    return k == 0 ? 0.0 : k * power(x, h) * power(y, k - 1);
-  }
-  return 0;
-}
-
-inline double apply(const Interpolation_condition& c, const Bivariate_polynomial& p) {
-  double r = 0;
-  for (int h = 0; h <= p.degree(); ++h)
-    for (int k = 0; h + k <= p.degree(); ++k)
-      r += p.coefficient(h, k) * apply_to_monomial(c, h, k);
-  return r;
-}
-
-} // namespace internal
+using Bivariate_polynomial = Polynomial_surface<CGAL::Simple_cartesian<double>>;
 
 /*!
   \ingroup PkgTriangularSplineBlending

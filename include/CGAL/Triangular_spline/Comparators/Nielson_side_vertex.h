@@ -10,6 +10,8 @@
 #include <CGAL/Triangular_spline/closed_surface.h>
 #include <CGAL/Triangular_spline/differential_geometry.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/array_vector_3.h>
+#include <CGAL/Triangular_spline/internal/blending_mesh.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/assertions.h>
@@ -113,20 +115,26 @@ public:
         throw Invalid_input("Nielson: face " + std::to_string(std::size_t(f)) + " has " +
                             std::to_string(CGAL::degree(f, m_mesh)) + " vertices, not 3");
     m_position.resize(m_mesh.number_of_vertices());
+    std::vector<std::size_t> degree(m_mesh.number_of_vertices());
     for (auto v : m_mesh.vertices()) {
-      m_position[std::size_t(v)] = internal::blend_point(m_mesh, v);
+      m_position[std::size_t(v)] = internal::to_array_3(m_mesh.point(v));
+      degree[std::size_t(v)] = CGAL::degree(v, m_mesh);
       for (double x : m_position[std::size_t(v)])
         if (!std::isfinite(x))
           throw Invalid_input("Nielson: vertex " + std::to_string(std::size_t(v)) +
                               " has a coordinate that is not finite");
     }
-    m_normal = internal::blending_vertex_normals(m_mesh, m_estimated_normals, "Nielson");
     m_corners.resize(m_mesh.number_of_faces());
     for (auto f : m_mesh.faces()) {
       std::size_t c = 0;
       for (auto v : CGAL::vertices_around_face(m_mesh.halfedge(f), m_mesh))
         m_corners[std::size_t(f)][c++] = std::size_t(v);
     }
+    // the normals of Mesh_blending_surface, from the same code
+    const std::vector<Vec3> given =
+        internal::surface_mesh_normals(m_mesh, get(CGAL::vertex_index, m_mesh));
+    m_estimated_normals = given.empty();
+    m_normal = internal::blending_vertex_normals(m_position, m_corners, degree, given, "Nielson");
     m_curves.resize(m_mesh.number_of_edges());
     for (auto e : m_mesh.edges()) {
       const std::array<std::size_t, 2> ab = edge_vertices(std::size_t(e));
@@ -320,10 +328,10 @@ private:
   // The PN edge point next to p, exactly as `pn_triangles()` computes it, with a tangent
   // that must exist.
   Vec3 tangent_point(const Vec3& p, const Vec3& q, const Vec3& n, std::size_t v) const {
-    const Vec3 d = internal::sub3(q, p);
-    const double w = internal::dot3(d, n); // n is unit
-    const Vec3 t = internal::sub3(d, internal::scaled3(n, w));
-    if (!(internal::norm3(t) > 1e-12 * internal::norm3(d)))
+    const Vec3 d = internal::difference(q, p);
+    const double w = internal::dot(d, n); // n is unit
+    const Vec3 t = internal::difference(d, internal::scaled(n, w));
+    if (!(internal::norm(t) > 1e-12 * internal::norm(d)))
       throw Invalid_input("Nielson: an edge of vertex " + std::to_string(v) +
                           " is parallel to its normal (no tangent)");
     Vec3 r;
