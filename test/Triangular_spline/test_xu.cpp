@@ -1381,8 +1381,8 @@ TEST(Adaptive, EqualsTheLocalFitOnResolvedData) {
 
 TEST(Adaptive, SparseFeaturefulDataFollowTheLeastEnergy) {
   // Franke's cosine peak sampled at 40 random points: the local polynomials do not resolve
-  // it, and the adaptive fit is smoother (less energy) than the local one and closer to the
-  // function at a check grid, as on TOMS 792's sparse sets.
+  // it, and the adaptive fit is smoother (less energy) than the local one and, over 20 draws,
+  // closer to the function at a check grid, as on TOMS 792's sparse sets.
   auto f = [](double x, double y) {
     const double r = std::hypot(x - 0.5, y - 0.5);
     return std::exp(-81.0 / 32 * r * r) * std::cos(9 * r);
@@ -1416,7 +1416,26 @@ TEST(Adaptive, SparseFeaturefulDataFollowTheLeastEnergy) {
       sum += e * e;
     return sum;
   };
-  EXPECT_LT(squared_error(adaptive), squared_error(plain));
+  // Closer to the function: on any one draw of 40 points either fit can be (the local fit
+  // wins 9 of these 20 draws), but over the draws the adaptive fit's squared error is lower
+  // (measured 540 against 721) and so is its worst draw (58 against 192).
+  double adaptive_sum = 0, plain_sum = 0, adaptive_worst = 0, plain_worst = 0;
+  for (unsigned seed = 10; seed < 30; ++seed) {
+    const auto draw = delaunay_of<Epick>(random_square_points(40, seed));
+    std::vector<double> values;
+    for (const auto& p : draw.points())
+      values.push_back(f(p.x(), p.y()));
+    C1_quintic_spline<Epick> a(draw, Corner_frame::CORNER_AND_TWO_STARS),
+        l(draw, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::fit_vertex_data(a, values, Fit::ADAPTIVE, 5);
+    TS::fit_vertex_data(l, values, Fit::LOCAL_POLYNOMIAL, 5);
+    adaptive_sum += squared_error(a);
+    plain_sum += squared_error(l);
+    adaptive_worst = (std::max)(adaptive_worst, squared_error(a));
+    plain_worst = (std::max)(plain_worst, squared_error(l));
+  }
+  EXPECT_LT(adaptive_sum, plain_sum);
+  EXPECT_LT(adaptive_worst, plain_worst);
 }
 
 TEST(LocalFit, ResolutionIsZeroOnPolynomialsAndNearOneOnNoise) {

@@ -50,11 +50,11 @@ enum class Degree_selection {
   plane, 14 points (1.5 times the unknowns of a cubic) for degrees 2 and 3, 30 (a quintic's)
   for degrees 4 and 5, from the rings around \f$v\f$ (up to eight), nearest first, the
   distance of a point in ring \f$r\f$ counted \f$1.5^{r-1}\f$ times (nearest points, but
-  balanced around \f$v\f$ where the data are clustered). The fits are taken in the scaled
-  local coordinates \f$(x - v)/S_v\f$, \f$S_v\f$ a
-  power of two. If the data come from a polynomial of degree at most \f$d_v\f$, \f$p_v\f$ is that
-  polynomial, exactly with an exact number type: this is what gives the spline its polynomial
-  precision.
+  balanced around \f$v\f$ where the data are clustered); a boundary vertex first takes its
+  first-ring neighbours within twice the distance of the farthest of these points. The
+  fits are taken in the scaled local coordinates \f$(x - v)/S_v\f$, \f$S_v\f$ a power of two. If the
+  data come from a polynomial of degree at most \f$d_v\f$, \f$p_v\f$ is that polynomial, exactly
+  with an exact number type: this is what gives the spline its polynomial precision.
 
   <b>Degree.</b> \f$d_v\f$ is the largest degree for which these points (as many as exist,
   at least 1.5 times its unknowns) give a well-conditioned scaled, weighted design matrix
@@ -274,9 +274,12 @@ private:
   // bend to those far points and choose low degrees (Franke's function from 16641 random
   // points: largest error 1.4e-3 near the hull with whole rings, 3.3e-6 now; scipy's
   // Clough-Tocher 3.2e-4). The factor keeps the rings' balance where the data are sparse
-  // and clustered: with plain distances (factor 1) the nearest points of a vertex at the
-  // edge of a cluster all lie on one side, and its polynomial overshoots the data by 3x
-  // (60 clustered points); factor 2 loses most of the gain near the hull (1e-5).
+  // or clustered: with plain distances (factor 1) the nearest points of a vertex at the edge
+  // of a cluster all lie on one side and its polynomial overshoots the data by 3x (60
+  // clustered points). A boundary vertex also keeps the first-ring neighbours within twice
+  // the distance of its farthest point: its polynomial is read along the boundary edges,
+  // and without them the local fit of 500 points of a terrain overshot by 3 km along a
+  // long hull edge.
   static constexpr std::array<double, max_rings + 1> ring_factor2 = {
       1,
       2.25,
@@ -329,9 +332,10 @@ private:
       const double dy = CGAL::to_double(domain.point(a).y()) - cy;
       return dx * dx + dy * dy;
     };
+    const auto& factor2 = ring_factor2;
     work.distance2.resize(work.points.size());
     for (std::size_t i = 0; i < work.points.size(); ++i)
-      work.distance2[i] = distance2(work.points[i]) * ring_factor2[std::size_t(work.ring_of[i])];
+      work.distance2[i] = distance2(work.points[i]) * factor2[std::size_t(work.ring_of[i])];
     work.order.resize(work.points.size());
     for (std::size_t i = 0; i < work.order.size(); ++i)
       work.order[i] = i;
@@ -343,6 +347,18 @@ private:
     for (std::size_t i = 0; i < work.order.size(); ++i)
       work.sorted[i] = work.points[work.order[i]];
     work.points.swap(work.sorted);
+    if (domain.is_boundary_vertex(v) && !work.points.empty()) {
+      // First-ring neighbours within twice the distance of the farthest point the largest
+      // degree takes come first, nearest first.
+      const std::size_t k = (std::min)(needed(m_max_degree), work.points.size());
+      const double reach2 = 4 * distance2(work.points[k - 1]);
+      auto kept = [&](Index w) {
+        return distance2(w) <= reach2 &&
+               std::binary_search(work.ring.begin(), work.ring.end(), w,
+                                  [&](Index a, Index b) { return point_less(a, b); });
+      };
+      std::stable_partition(work.points.begin(), work.points.end(), kept);
+    }
   }
 
   bool point_less(Index a, Index b) const {
