@@ -1073,9 +1073,9 @@ TEST(StablePropagation, FourNearlyCollinearDecimalPointsDoNotCrash) {
 
 TEST(LocalFit, CurvatureOfExpSinHasTheRightSignAlmostEverywhere) {
   // exp(x) sin(2y) has K < 0 everywhere. From 1000 random points, the default fit's
-  // Gaussian curvature (exact patch derivatives) must be negative at >= 99% of a 200 x 200
-  // grid inside the hull (measured: 99.6% with data/expsin_1000.xyz; the rest sits in thin
-  // triangles along the hull). The tangent-plane fit gets about 74%.
+  // Gaussian curvature (exact patch derivatives) must be negative at >= 99.5% of a 200 x 200
+  // grid inside the hull (measured: 99.8%, 99.6% with the whole-ring stencils; the rest sits
+  // in thin triangles along the hull). The tangent-plane fit gets about 74%.
   std::mt19937 engine(1000);
   std::uniform_real_distribution<double> uniform(0, 1);
   std::vector<Epick::Point_2> points;
@@ -1106,7 +1106,7 @@ TEST(LocalFit, CurvatureOfExpSinHasTheRightSignAlmostEverywhere) {
     negative += K < 0 ? 1 : 0;
   }
   EXPECT_GT(inside, 38000u);
-  EXPECT_GE(double(negative), 0.99 * double(inside)) << negative << " of " << inside;
+  EXPECT_GE(double(negative), 0.995 * double(inside)) << negative << " of " << inside;
 }
 
 TEST(LocalFit, ThreadsDoNotChangeTheResult) {
