@@ -120,7 +120,8 @@ Json solve_ag1_system(const Pseudo_ag1_job& job,
   Json r = Json::object();
   r["start"] = job.ag1_start;
   r["start_umbrella"] = job.ag1_umbrella;
-  r["exact"] = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
+  // a copy: the JSON binds by reference, and Boolean_tag::value has no definition to bind to
+  r["exact"] = bool(CGAL::Algebraic_structure_traits<FT>::Is_exact::value);
   r["consistent"] = walk.consistent;
   r["complete"] = walk.complete;
   r["solved_vertices"] = walk.order.size();
