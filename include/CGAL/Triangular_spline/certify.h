@@ -23,13 +23,6 @@
 namespace CGAL {
 namespace Triangular_spline {
 
-namespace internal_np {
-
-enum residual_tolerance_t { residual_tolerance };
-enum join_conditions_t { join_conditions };
-
-} // namespace internal_np
-
 /*!
   \ingroup PkgTriangularSplineContinuity
   \brief the named parameters of `certify_continuity()`: `residual_tolerance(double)` and
