@@ -223,7 +223,7 @@ public:
     returns the blossom (polar form) \f$f(a_1,\dots,a_m)\f$, each argument given by its
     barycentric weights; weights summing to 0 stand for vectors (the linear extension of
     the blossom, used for derivatives). De Casteljau's algorithm with distinct arguments.
-    \pre `arguments.size() == degree()`
+    \throws Invalid_input if `arguments.size() != degree()`
     \param arguments the blossom arguments, one per degree
     \returns the blossom (polar form) \f$f(a_1,\dots,a_m)\f$, each argument given by its barycentric
     weights
@@ -240,6 +240,7 @@ public:
   }
 
   /// returns the blossom \f$f(a_1,\dots,a_m)\f$ at the points `arguments`.
+  /// \throws Invalid_input if `arguments.size() != degree()`
   /// \param arguments the blossom arguments, one per degree
   /// \returns the blossom \f$f(a_1,\dots,a_m)\f$ at the points `arguments`
   Value blossom(const std::vector<Point_2>& arguments) const {

@@ -129,7 +129,7 @@ auto thin_plate_energy_factors(int degree, const Point_2& r, const Point_2& s, c
   `Fit::MINIMAL_ENERGY` fit. In floating point prefer the factors: \f$b^T G b\f$ cancels
   catastrophically on thin triangles.
   \tparam Point_2 a CGAL 2D point type
-  \pre `degree >= 2` and \f$(r,s,t)\f$ not collinear
+  \throws Invalid_input if `degree < 2` or \f$(r,s,t)\f$ is collinear
   \returns the matrix row by row (`G[a * n + b]`, n the number of indices)
   \param degree the degree
   \param r the first corner of the domain triangle
