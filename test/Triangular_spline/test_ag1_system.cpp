@@ -4,6 +4,7 @@
 #include "test_support.h"
 
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/Triangular_spline/Blending/test_meshes.h>
 #include <CGAL/Triangular_spline/Domain/closed_triangle_mesh.h>
 #include <CGAL/Triangular_spline/Xu/AG1_system.h>
@@ -137,6 +138,17 @@ TS::AG1_walk<FT> centroid_walk(const Tetrahedron& t) {
 
 // The orientation change of a relation: derived by hand as (1/l, -n/l, -m/l); checked on
 // random diamonds, and it is an involution.
+// outgoing_ring() checks the cheap half of its precondition: not a border vertex.
+TEST(AG1System, OutgoingRingRefusesABorderVertex) {
+  Mesh triangle;
+  const Vertex a = triangle.add_vertex(Point(0, 0, 0)), b = triangle.add_vertex(Point(1, 0, 0)),
+               c = triangle.add_vertex(Point(0, 1, 0));
+  triangle.add_face(a, b, c);
+  EXPECT_THROW(TS::outgoing_ring(a, triangle), CGAL::Failure_exception);
+  const Tetrahedron t;
+  EXPECT_EQ(TS::outgoing_ring(t.a, t.mesh).size(), 3u);
+}
+
 TEST(AG1System, ReversedRelationSwapsTheEnds) {
   Random_rationals random(11);
   for (int trial = 0; trial < 200; ++trial) {

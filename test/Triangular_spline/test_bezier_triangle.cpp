@@ -7,6 +7,8 @@
 #include <CGAL/Triangular_spline/Multi_index.h>
 #include <CGAL/Triangular_spline/differential_geometry.h>
 
+#include <CGAL/exceptions.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -39,6 +41,18 @@ TEST(MultiIndex, EnumerationFollowsXuTable23) {
       EXPECT_EQ(TS::multi_index(p, m), net[p]);
     }
   }
+}
+
+// linear_index() checks its documented precondition (a programming error: CGAL's failure);
+// a degree or a position out of range is a bad argument (Invalid_input).
+TEST(MultiIndex, ContractsAreChecked) {
+  EXPECT_EQ(TS::linear_index(3, 0, 3), 9u);
+  EXPECT_THROW(TS::linear_index(-1, 0, 3), CGAL::Failure_exception);
+  EXPECT_THROW(TS::linear_index(0, -1, 3), CGAL::Failure_exception);
+  EXPECT_THROW(TS::linear_index(2, 2, 3), CGAL::Failure_exception);
+  EXPECT_THROW(TS::linear_index(Multi_index{1, 1, -1}), CGAL::Failure_exception);
+  EXPECT_THROW(TS::number_of_control_points(-1), TS::Invalid_input);
+  EXPECT_THROW(TS::multi_index(10, 3), TS::Invalid_input);
 }
 
 TEST(MultiIndex, QuinticRolesMatchSpec) {

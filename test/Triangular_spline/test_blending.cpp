@@ -7,12 +7,14 @@
 #include <CGAL/Triangular_spline/Blending/blending_functions.h>
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
 #include <CGAL/Triangular_spline/Blending/blending_continuity.h>
+#include <CGAL/Triangular_spline/Blending/blending_sampler.h>
 #include <CGAL/Triangular_spline/Blending/blending_schemes.h>
 #include <CGAL/Triangular_spline/Blending/test_meshes.h>
 #include <CGAL/Triangular_spline/Blending/vertex_surfaces.h>
 #include <CGAL/Triangular_spline/internal/blending_geometry.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/exceptions.h>
 
 #include <gtest/gtest.h>
 
@@ -1150,6 +1152,23 @@ TEST(MeshBlending, BadInput) {
   Mesh isolated = TS::blending_test_mesh<Point_3>("octahedron");
   isolated.add_vertex(Point_3(5, 5, 5));
   EXPECT_THROW(Blending_surface{isolated}, TS::Invalid_input);
+}
+
+// The sampler of measure_closed_surface() refuses a surface with non-triangular faces when it
+// is built (bad input), and checks the face index of each sample (a programming error).
+TEST(MeshBlending, SamplerNeedsATriangleMesh) {
+  const Blending_surface cube(TS::blending_test_mesh<Point_3>("cube"));
+  try {
+    const TS::Mesh_blending_sampler<Point_3> sampler(cube);
+    ADD_FAILURE() << "accepted quadrilaterals";
+  } catch (const TS::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("face 0 has 4 sides"), std::string::npos) << e.what();
+  }
+  const Blending_surface icosahedron(TS::blending_test_mesh<Point_3>("icosahedron"));
+  const TS::Mesh_blending_sampler<Point_3> sampler(icosahedron);
+  const std::array<double, 3> centre{{1.0 / 3, 1.0 / 3, 1.0 / 3}};
+  EXPECT_TRUE(sampler(std::size_t(0), centre).regular);
+  EXPECT_THROW(sampler(icosahedron.number_of_faces(), centre), CGAL::Failure_exception);
 }
 
 } // namespace

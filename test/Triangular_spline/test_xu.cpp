@@ -340,6 +340,29 @@ TEST(Certificate, OneCertificateForEveryNetworkAndOrder) {
   EXPECT_EQ(a.str(), b.str());
 }
 
+// A negative order is bad input, as one above the degree: Invalid_input, also for a network
+// without interior edges, where no join is checked.
+TEST(Certificate, NegativeOrderIsBadInput) {
+  using K = Exact_kernel;
+  const auto domains = all_domains<K>();
+  C1_quintic_spline<K> spline(domains.front().second);
+  spline.propagate();
+  EXPECT_THROW(TS::certify_continuity(spline, -1), TS::Invalid_input);
+  EXPECT_THROW(TS::certify_continuity(spline, 6), TS::Invalid_input);
+  TS::Polynomial_surface<K> p(5);
+  const K::Point_2 r(0, 0), s(1, 0), t(0, 1);
+  const TS::Patch_network<K> single(TS::Planar_domain<K>({r, s, t}, {{{0, 1, 2}}}),
+                                    {p.to_bezier(5, r, s, t)});
+  EXPECT_EQ(TS::certify_continuity(single, 1).interior_edges, 0u);
+  try {
+    TS::certify_continuity(single, -1);
+    ADD_FAILURE() << "accepted a negative order";
+  } catch (const TS::Invalid_input& e) {
+    EXPECT_NE(std::string(e.what()).find("continuity order -1 is negative"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Certificate, OnlyExactZerosMakeAProof) {
   using K = Exact_kernel;
   using FT = K::FT;

@@ -8,6 +8,7 @@
 #include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 #include <CGAL/Triangular_spline/internal/text.h>
+#include <CGAL/Triangular_spline/internal/de_casteljau.h>
 
 #include <CGAL/Cartesian_converter.h>
 #include <CGAL/number_utils.h>
@@ -22,35 +23,6 @@
 
 namespace CGAL {
 namespace Triangular_spline {
-
-namespace internal {
-
-// Scratch nets live on the stack up to degree 6 (28 values): evaluation is the hot path of
-// tessellation and certification, and a heap allocation per call would dominate it.
-template <class Value>
-using Scratch_net = boost::container::small_vector<Value, 28>;
-
-// One de Casteljau step, in place: the net of degree n becomes the net of degree n-1 of
-// f(w, .), where w is given by its barycentric weights. The output position of (i,j) is
-// lin(i,j,n) - i, never after any position still to be read, so no scratch is needed.
-template <class FT, class Net>
-void de_casteljau_step(Net& net, int n, const std::array<FT, 3>& w) {
-  using Value = typename Net::value_type;
-  std::size_t out = 0;
-  for (int i = 0; i < n; ++i) {
-    const std::size_t row = linear_index(i, 0, n);
-    const std::size_t next_row = linear_index(i + 1, 0, n);
-    for (int j = 0; j < n - i; ++j) {
-      // b'_{i,j,k} = w0 b_{i+1,j,k} + w1 b_{i,j+1,k} + w2 b_{i,j,k+1}; the temporary keeps
-      // expression-template number types (gmpxx) from reading a half-written target.
-      Value v = w[0] * net[next_row + j] + w[1] * net[row + j + 1] + w[2] * net[row + j];
-      net[out++] = std::move(v);
-    }
-  }
-  net.resize(out);
-}
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineCore
@@ -251,7 +223,7 @@ public:
     returns the blossom (polar form) \f$f(a_1,\dots,a_m)\f$, each argument given by its
     barycentric weights; weights summing to 0 stand for vectors (the linear extension of
     the blossom, used for derivatives). De Casteljau's algorithm with distinct arguments.
-    \pre `arguments.size() == degree()`
+    \throws Invalid_input if `arguments.size() != degree()`
     \param arguments the blossom arguments, one per degree
     \returns the blossom (polar form) \f$f(a_1,\dots,a_m)\f$, each argument given by its barycentric
     weights
@@ -268,6 +240,7 @@ public:
   }
 
   /// returns the blossom \f$f(a_1,\dots,a_m)\f$ at the points `arguments`.
+  /// \throws Invalid_input if `arguments.size() != degree()`
   /// \param arguments the blossom arguments, one per degree
   /// \returns the blossom \f$f(a_1,\dots,a_m)\f$ at the points `arguments`
   Value blossom(const std::vector<Point_2>& arguments) const {

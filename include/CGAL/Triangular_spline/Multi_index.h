@@ -6,6 +6,8 @@
 
 #include <CGAL/Triangular_spline/exceptions.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -95,9 +97,9 @@ inline std::string role_name(Control_point_role role) {
 /*!
   \ingroup PkgTriangularSplineCore
   \brief returns the number \f$(m+1)(m+2)/2\f$ of control points of a degree `m` patch.
-  \pre `m >= 0`
   \param m the degree
   \returns the number \f$(m+1)(m+2)/2\f$ of control points of a degree `m` patch.
+  \throws Invalid_input if `m < 0`
 */
 inline std::size_t number_of_control_points(int m) {
   if (m < 0)
@@ -119,6 +121,7 @@ inline std::size_t number_of_control_points(int m) {
   \returns the position of `(i, j, m-i-j)` in Xu's Table 2.3 order
 */
 inline std::size_t linear_index(int i, int j, int m) {
+  CGAL_precondition(0 <= i && 0 <= j && i + j <= m);
   // Rows 0..i-1 hold (m+1) + m + ... + (m-i+2) entries.
   return static_cast<std::size_t>(i * (m + 1) - i * (i - 1) / 2 + j);
 }
@@ -134,7 +137,7 @@ inline std::size_t linear_index(const Multi_index& index) {
   \ingroup PkgTriangularSplineCore
   \brief returns the multi-index stored at position `position` of a degree `m` net
   (inverse of `linear_index()`).
-  \pre `position < number_of_control_points(m)`
+  \throws Invalid_input if `position >= number_of_control_points(m)` or `m < 0`
   \param position the linear position in the net
   \param m the degree
   \returns the multi-index stored at position `position` of a degree `m` net (inverse of

@@ -45,7 +45,11 @@ public:
 
   /*!
     takes `domain` and `patches`, `patches[f]` being the patch of face `f`.
-    \pre each patch is over the three corners of its face, in any order
+    A patch may be over another triangle than its face: evaluation and tessellation
+    re-express each point in the patch's triangle. `write_spline_file()` needs each patch
+    over the three corners of its face (in any order) and throws `Invalid_input` otherwise;
+    `certify_continuity()` compares the patches as they are, across the edge their
+    triangles share, and throws `Invalid_input` if they share none.
     \throws Invalid_input if the numbers of patches and faces differ
     \param domain the triangulated planar domain
     \param patches the patches, `patches[f]` being the patch of face `f`

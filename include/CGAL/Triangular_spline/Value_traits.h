@@ -4,6 +4,8 @@
 #ifndef CGAL_TRIANGULAR_SPLINE_VALUE_TRAITS_H
 #define CGAL_TRIANGULAR_SPLINE_VALUE_TRAITS_H
 
+#include <CGAL/Triangular_spline/internal/integer_log10.h>
+
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Fraction_traits.h>
 #include <CGAL/Kernel_traits.h>
@@ -137,25 +139,6 @@ bool is_zero_value(const Value& v) {
       return false;
   return true;
 }
-
-namespace internal {
-
-// log10 |z| of an integer of any size: to_double() overflows beyond 1e308, so huge integers
-// are divided by 2^960 first (each division is exact enough for a magnitude).
-template <class Integer>
-double log10_of_integer(Integer z) {
-  if (CGAL::is_negative(z))
-    z = -z;
-  const Integer step(std::ldexp(1.0, 960));
-  double exponent = 0;
-  while (!(CGAL::to_double(z) <= 1e300)) {
-    z = z / step;
-    exponent += 960;
-  }
-  return std::log10(CGAL::to_double(z)) + exponent * std::log10(2.0);
-}
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineCore

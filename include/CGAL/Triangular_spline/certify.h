@@ -23,13 +23,6 @@
 namespace CGAL {
 namespace Triangular_spline {
 
-namespace internal_np {
-
-enum residual_tolerance_t { residual_tolerance };
-enum join_conditions_t { join_conditions };
-
-} // namespace internal_np
-
 /*!
   \ingroup PkgTriangularSplineContinuity
   \brief the named parameters of `certify_continuity()`: `residual_tolerance(double)` and
@@ -132,8 +125,8 @@ struct Continuity_certificate {
   \cgalNamedParamsEnd
 
   \returns the certificate, one entry per interior edge in edge order
-  \pre `k >= 0`
-  \throws Invalid_input if two patches across an edge differ in degree or `k` exceeds it
+  \throws Invalid_input if `k` is negative, or two patches across an edge differ in degree or
+  `k` exceeds it
 */
 template <class TriangularSplineNetwork,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -145,7 +138,9 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
   const auto& domain = network.domain();
   using Index = typename std::decay_t<decltype(domain)>::Index;
   using Geom_traits = typename std::decay_t<decltype(domain)>::Geom_traits;
-  CGAL_precondition(k >= 0);
+  // Checked here, not only by check_join(): a network without interior edges calls it never.
+  if (k < 0)
+    throw Invalid_input("certify: continuity order " + std::to_string(k) + " is negative");
   const double tolerance =
       choose_parameter(get_parameter(np, internal_np::residual_tolerance), 0.0);
   const Join_conditions conditions =

@@ -5,8 +5,10 @@
 #define CGAL_TRIANGULAR_SPLINE_CONTINUITY_H
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/Join_report.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/join_checks.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/enum.h>
@@ -83,108 +85,6 @@ inline Certificate_verdict certificate_verdict(bool exact, std::size_t failed,
     return Certificate_verdict::FAILED;
   return exact && nonzero == 0 ? Certificate_verdict::PROOF : Certificate_verdict::WITHIN_TOLERANCE;
 }
-
-/*!
-  \ingroup PkgTriangularSplineContinuity
-  \brief one compared pair of blossom values \f$f_B(p^g q^h r^i s^j) - f_A(p^g q^h r^i s^j)\f$.
-*/
-struct Join_condition {
-  int order = 0;       ///< \f$g+h\f$: the number of arguments off the shared edge
-  int p_count = 0;     ///< \f$g\f$, copies of A's apex \f$p\f$
-  int q_count = 0;     ///< \f$h\f$, copies of B's apex \f$q\f$
-  int r_count = 0;     ///< \f$i\f$, copies of the first shared vertex \f$r\f$
-  int s_count = 0;     ///< \f$j\f$, copies of the second shared vertex \f$s\f$
-  double residual = 0; ///< largest absolute coordinate of the difference (in `double`)
-  /// the difference is zero in the number type: a proof with an exact number type, only a
-  /// cancellation of rounded values with `double`
-  bool zero = false;
-  bool satisfied = false; ///< `zero`, or every coordinate within the tolerance
-};
-
-/*!
-  \ingroup PkgTriangularSplineContinuity
-  \brief the outcome of `check_join()`.
-*/
-struct Join_report {
-  int requested_order = 0; ///< the \f$k\f$ asked for
-  /// the largest \f$l \le k\f$ such that every condition of order \f$\le l\f$ is satisfied;
-  /// -1 if even \f$C^0\f$ fails
-  int achieved_order = -1;
-  bool holds = false;      ///< `achieved_order >= requested_order`
-  double max_residual = 0; ///< largest residual over all conditions checked
-  /// \f$\log_{10}\f$ of the largest residual, from the exact differences where `double`
-  /// under- or overflows (`log10_magnitude()`): \f$-\infty\f$ iff every difference is zero
-  double max_residual_log10 = -std::numeric_limits<double>::infinity();
-  bool exact = false; ///< the verdict was decided with an exact number type
-  /// local indices (0, 1, 2) in patch A of \f$p, r, s\f$ and in patch B of \f$q, r, s\f$
-  std::array<int, 3> a_vertices{{0, 1, 2}}, b_vertices{{0, 1, 2}};
-  std::vector<Join_condition> conditions; ///< every condition checked, by increasing order
-  /// \var b_vertices
-  /// local indices (0, 1, 2) in patch B of \f$q, r, s\f$
-};
-
-namespace internal {
-
-// Finds the shared edge: returns {p, r, s} local indices in A and {q, r, s} in B, where
-// r and s are the same points in both. Exact point comparison and orientation decide.
-template <class GeomTraits, class Value>
-std::pair<std::array<int, 3>, std::array<int, 3>>
-shared_edge(const Bezier_triangle<GeomTraits, Value>& A,
-            const Bezier_triangle<GeomTraits, Value>& B) {
-  std::vector<std::pair<int, int>> common;
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b)
-      if (A.vertex(a) == B.vertex(b))
-        common.emplace_back(a, b);
-  if (common.size() != 2)
-    throw Invalid_input("join test: the domain triangles share " + std::to_string(common.size()) +
-                        " vertices, adjacent triangles share exactly 2");
-  const int p = 3 - common[0].first - common[1].first;
-  const int q = 3 - common[0].second - common[1].second;
-  const auto orientation = A.geom_traits().orientation_2_object();
-  const auto& r = A.vertex(common[0].first);
-  const auto& s = A.vertex(common[1].first);
-  const CGAL::Orientation op = orientation(r, s, A.vertex(p));
-  const CGAL::Orientation oq = orientation(r, s, B.vertex(q));
-  if (op == oq)
-    throw Invalid_input("join test: the domain triangles overlap (both apexes " +
-                        point_to_string(A.vertex(p)) + " and " + point_to_string(B.vertex(q)) +
-                        " lie on the same side of the shared edge)");
-  return {{{p, common[0].first, common[1].first}}, {{q, common[0].second, common[1].second}}};
-}
-
-// Fills the residual and the verdict of one condition from its difference. The tolerance is
-// compared exactly in the number type, and log10 of a residual outside double's normal
-// range is taken from the exact difference (folded into the report's max_residual_log10).
-template <class Value>
-void record_difference(Join_condition& c, const Value& difference, double tolerance,
-                       Join_report& report) {
-  c.residual = max_abs_coordinate(difference);
-  c.zero = is_zero_value(difference);
-  c.satisfied = c.zero || (tolerance > 0 && is_within_tolerance(difference, tolerance));
-  if (!c.zero && !(c.residual >= 1e-300 && c.residual <= 1e300)) {
-    const double magnitude = max_abs_coordinate_log10(difference);
-    if (!(magnitude <= report.max_residual_log10))
-      report.max_residual_log10 = magnitude;
-  }
-}
-
-// The largest residual and the achieved order, once every condition is recorded.
-inline void summarize_conditions(Join_report& report) {
-  double normal_max = 0;
-  for (const Join_condition& c : report.conditions) {
-    if (!(c.residual <= report.max_residual))
-      report.max_residual = c.residual;
-    if (!c.zero && c.residual >= 1e-300 && c.residual <= 1e300 && c.residual > normal_max)
-      normal_max = c.residual;
-    if (!c.satisfied && c.order - 1 < report.achieved_order)
-      report.achieved_order = c.order - 1;
-  }
-  if (normal_max > 0 && !(std::log10(normal_max) <= report.max_residual_log10))
-    report.max_residual_log10 = std::log10(normal_max);
-}
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineContinuity

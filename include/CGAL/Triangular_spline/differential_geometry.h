@@ -6,6 +6,7 @@
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/internal/array_vector_3.h>
+#include <CGAL/Triangular_spline/internal/values_as_3d.h>
 
 #include <array>
 #include <cmath>
@@ -48,21 +49,6 @@ struct Surface_curvature {
   double mean = 0;              ///< \f$H = (EN - 2FM + GL)/(2(EG - F^2))\f$
   bool regular = true;          ///< `false` where \f$F_x \times F_y = 0\f$ (values are NaN)
 };
-
-namespace internal {
-
-template <class Value>
-std::array<double, 3> as_3d(const Value& v, bool is_graph_value, double graph_x, double graph_y) {
-  using Traits = Value_traits<Value>;
-  if (is_graph_value)
-    return {{graph_x, graph_y, CGAL::to_double(Traits::coordinate(v, 0))}};
-  std::array<double, 3> r{{0, 0, 0}};
-  for (int c = 0; c < Traits::dimension && c < 3; ++c)
-    r[static_cast<std::size_t>(c)] = CGAL::to_double(Traits::coordinate(v, c));
-  return r;
-}
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineCore

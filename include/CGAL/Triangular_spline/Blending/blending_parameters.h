@@ -18,19 +18,6 @@
 namespace CGAL {
 namespace Triangular_spline {
 
-namespace internal_np {
-
-// CGAL 5.5's list of parameter names is closed: our own tags live here, looked up with
-// CGAL::parameters::get_parameter() like CGAL's.
-enum blending_order_t { blending_order };
-enum blending_variant_t { blending_variant };
-enum vertex_surface_method_t { vertex_surface_method };
-enum least_squares_degree_t { least_squares_degree };
-enum normals_degree_t { normals_degree };
-enum least_interpolant_tolerance_t { least_interpolant_tolerance };
-
-} // namespace internal_np
-
 /*!
   \ingroup PkgTriangularSplineBlending
   \brief the named parameters of the generalized blending (`make_blending_surface()`,

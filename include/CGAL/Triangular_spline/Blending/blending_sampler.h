@@ -7,9 +7,13 @@
 #include <CGAL/Triangular_spline/Blending/Mesh_blending_surface.h>
 #include <CGAL/Triangular_spline/closed_surface.h>
 #include <CGAL/Triangular_spline/differential_geometry.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+
+#include <CGAL/assertions.h>
 
 #include <array>
 #include <cstddef>
+#include <string>
 
 namespace CGAL {
 namespace Triangular_spline {
@@ -30,18 +34,27 @@ class Mesh_blending_sampler {
 public:
   /// the sampler of `surface` (kept by reference)
   /// \param surface the blended surface, over a triangle mesh
+  /// \throws Invalid_input if a face of `surface` is not a triangle
   explicit Mesh_blending_sampler(const Mesh_blending_surface<Point_3>& surface)
-      : m_surface(surface) {}
+      : m_surface(surface) {
+    // checked once here, not at every sample (a quad mesh is bad input, not a programming error)
+    for (std::size_t f = 0; f < m_surface.number_of_faces(); ++f)
+      if (m_surface.face_size(f) != 3)
+        throw Invalid_input("blending sampler: face " + std::to_string(f) + " has " +
+                            std::to_string(m_surface.face_size(f)) +
+                            " sides; the sampler needs a triangle mesh");
+  }
 
   /// \tparam Face `std::size_t` or a face descriptor convertible to the face's index (that
   /// of a `Surface_mesh` without removed elements)
-  /// \param f a face of the surface, a triangle
+  /// \param f a face of the surface
+  /// \pre the index of `f` is below the surface's `number_of_faces()`
   /// \param w barycentric weights of the face's corners
   /// \returns the sample of face `f` at `w`
   template <class Face>
   Surface_sample operator()(Face f, const std::array<double, 3>& w) const {
     const std::size_t face = static_cast<std::size_t>(f);
-    CGAL_precondition(m_surface.face_size(face) == 3);
+    CGAL_precondition(face < m_surface.number_of_faces());
     // the face parameter: the weights applied to the corners' parameters (the surface's
     // corners are in vertices_around_face order)
     std::array<double, 2> ab{{0, 0}};

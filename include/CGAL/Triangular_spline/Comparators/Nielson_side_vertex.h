@@ -257,6 +257,7 @@ public:
   /*!
     \param f a face index
     \param w barycentric weights of the face's corners
+    \pre `f` is below the mesh's number of faces
     \returns the point of the surface of face `f` at `w` (the vertex at a corner)
   */
   Vec3 point(std::size_t f, const Weights& w) const {
@@ -274,6 +275,7 @@ public:
     the median (see the class description).
     \param f a face index
     \param w barycentric weights of the face's corners
+    \pre `f` is below the mesh's number of faces
     \returns the derivatives
   */
   Surface_derivatives derivatives(std::size_t f, const Weights& w) const {

@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/number_utils.h>
 
@@ -83,6 +84,9 @@ canonical_halfedge(typename CGAL::Surface_mesh<Point_3>::Edge_index e,
 template <class Mesh>
 std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor>
 outgoing_ring(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& mesh) {
+  // a border vertex would put a border halfedge (no face) into the ring; manifoldness is not
+  // cheap to check
+  CGAL_precondition(!CGAL::is_border(v, mesh));
   std::vector<typename boost::graph_traits<Mesh>::halfedge_descriptor> ring;
   const auto first = opposite(halfedge(v, mesh), mesh);
   auto h = first;

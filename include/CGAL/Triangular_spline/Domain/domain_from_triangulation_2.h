@@ -5,6 +5,7 @@
 #define CGAL_TRIANGULAR_SPLINE_DOMAIN_DOMAIN_FROM_TRIANGULATION_2_H
 
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
+#include <CGAL/Triangular_spline/internal/hilbert_order.h>
 
 #include <CGAL/Unique_hash_map.h>
 #include <CGAL/hilbert_sort.h>
@@ -16,29 +17,6 @@
 
 namespace CGAL {
 namespace Triangular_spline {
-
-namespace internal {
-
-// Hilbert sorting of (point, handle) pairs with ties broken by the other coordinate: a strict
-// total order on distinct points, so the numbering does not depend on the input order.
-template <class GeomTraits, class Handle>
-struct Lexicographic_hilbert_traits {
-  using Point_2 = std::pair<typename GeomTraits::Point_2, Handle>;
-  struct Less_x_2 {
-    bool operator()(const Point_2& a, const Point_2& b) const {
-      return GeomTraits().compare_xy_2_object()(a.first, b.first) == CGAL::SMALLER;
-    }
-  };
-  struct Less_y_2 {
-    bool operator()(const Point_2& a, const Point_2& b) const {
-      return GeomTraits().compare_yx_2_object()(a.first, b.first) == CGAL::SMALLER;
-    }
-  };
-  Less_x_2 less_x_2_object() const { return Less_x_2(); }
-  Less_y_2 less_y_2_object() const { return Less_y_2(); }
-};
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineSplines

@@ -10,6 +10,7 @@
 #include <CGAL/Triangular_spline/IO/spline_file.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/spline_file_format.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Surface_mesh.h>
@@ -80,19 +81,6 @@ private:
   std::vector<std::vector<typename Kernel::Vector_3>> m_nets;
   bool m_exact;
 };
-
-namespace internal {
-constexpr const char* surface_file_magic = "tspline-surface";
-constexpr int surface_file_version = 1;
-
-// The corners of f in vertices_around_face order.
-template <class Mesh>
-std::array<typename Mesh::Vertex_index, 3> face_corners(const Mesh& mesh,
-                                                        typename Mesh::Face_index f) {
-  const auto h = mesh.halfedge(f);
-  return {{mesh.target(h), mesh.target(mesh.next(h)), mesh.source(h)}};
-}
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineIO

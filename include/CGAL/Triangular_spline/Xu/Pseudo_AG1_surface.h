@@ -208,6 +208,8 @@ struct Pseudo_AG1_flags {
   std::size_t shrinking_rounds = 0;       ///< rounds of automatic star shrinking
   std::size_t reoriented_components = 0;  ///< components turned outward
   /// calls `f(name, count)` for every field, in declaration order (for reports)
+  /// \tparam F a callable as `f(const char*, std::size_t)`
+  /// \param f the function called for every field
   template <class F>
   void for_each(F&& f) const {
     f("recentred_vertices", recentred_vertices);
@@ -226,33 +228,6 @@ struct Pseudo_AG1_flags {
            inverted_corners + averaged_map_fallbacks;
   }
 };
-
-namespace internal {
-
-template <class FT>
-FT pag1_sqrt(const FT& x) {
-  return FT(std::sqrt(std::max(0.0, CGAL::to_double(x))));
-}
-
-// Barycentric coordinates of x with respect to (a, b, c); false if the triangle is degenerate.
-template <class K>
-bool pag1_barycentric(const typename K::Point_2& x, const typename K::Point_2& a,
-                      const typename K::Point_2& b, const typename K::Point_2& c,
-                      std::array<typename K::FT, 3>& w) {
-  using FT = typename K::FT;
-  auto det = [](const typename K::Vector_2& u, const typename K::Vector_2& v) -> FT {
-    return u.x() * v.y() - u.y() * v.x();
-  };
-  const FT d = det(b - a, c - a);
-  if (d == FT(0))
-    return false;
-  w[0] = det(b - x, c - x) / d;
-  w[1] = det(c - x, a - x) / d;
-  w[2] = FT(1) - w[0] - w[1];
-  return true;
-}
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplinePseudoAG1
@@ -547,6 +522,22 @@ private:
     const Corner_plane<Kernel>& c = m_planes[v];
     const FT t = (c.normal * (x - position(v)) - c.offset) / c.normal.squared_length();
     return x - t * c.normal;
+  }
+
+  // Barycentric coordinates of x with respect to (a, b, c); false if the triangle is degenerate.
+  static bool barycentric(const typename Kernel::Point_2& x, const typename Kernel::Point_2& a,
+                          const typename Kernel::Point_2& b, const typename Kernel::Point_2& c,
+                          std::array<FT, 3>& w) {
+    auto det = [](const typename Kernel::Vector_2& u, const typename Kernel::Vector_2& v) -> FT {
+      return u.x() * v.y() - u.y() * v.x();
+    };
+    const FT d = det(b - a, c - a);
+    if (d == FT(0))
+      return false;
+    w[0] = det(b - x, c - x) / d;
+    w[1] = det(c - x, a - x) / d;
+    w[2] = FT(1) - w[0] - w[1];
+    return true;
   }
 
   void build() {
@@ -892,12 +883,10 @@ private:
       const Vertex_index r = m_mesh.source(h), s = m_mesh.target(h);
       const Halfedge_index rp = m_mesh.opposite(m_mesh.prev(h)), rq = m_mesh.next(o);
       const Halfedge_index sp = m_mesh.next(h), sq = m_mesh.opposite(m_mesh.prev(o));
-      E.end_r_valid = internal::pag1_barycentric<Kernel>(chart(r, m_star[rq]), chart(r, m_star[rp]),
-                                                         chart(r, m_planes[r].corner),
-                                                         chart(r, m_star[h]), E.end_r);
-      E.end_s_valid = internal::pag1_barycentric<Kernel>(chart(s, m_star[sq]), chart(s, m_star[sp]),
-                                                         chart(s, m_star[o]),
-                                                         chart(s, m_planes[s].corner), E.end_s);
+      E.end_r_valid = barycentric(chart(r, m_star[rq]), chart(r, m_star[rp]),
+                                  chart(r, m_planes[r].corner), chart(r, m_star[h]), E.end_r);
+      E.end_s_valid = barycentric(chart(s, m_star[sq]), chart(s, m_star[sp]), chart(s, m_star[o]),
+                                  chart(s, m_planes[s].corner), E.end_s);
       E.relation = {{FT(-1), FT(1), FT(1)}};
       E.averaged_fallback = false;
       if (m_options.edge_map == Edge_map::AVERAGED_DIAMOND) {

@@ -20,17 +20,6 @@
 namespace CGAL {
 namespace Triangular_spline {
 
-namespace internal_np {
-
-enum data_fit_t { data_fit };
-enum local_degree_t { local_degree };
-enum degree_selection_t { degree_selection };
-enum smoothing_t { smoothing };
-enum vertex_gradients_t { vertex_gradients };
-enum fit_statistics_t { fit_statistics };
-
-} // namespace internal_np
-
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief the named parameters of `make_c1_quintic_spline()`: `data_fit(Fit)`,

@@ -7,6 +7,7 @@
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/thin_plate_terms.h>
 
 #include <CGAL/number_utils.h>
 
@@ -34,71 +35,6 @@ inline std::vector<Multi_index> bernstein_indices(int degree) {
       indices.push_back({i, j, degree - i - j});
   return indices;
 }
-
-namespace internal {
-
-// Position of a multi-index of degree m in bernstein_indices(m): rows i = m .. a.i + 1 first.
-inline std::size_t bernstein_position(int m, const Multi_index& a) {
-  const int before = (m - a.i) * (m - a.i + 1) / 2;
-  return static_cast<std::size_t>(before + (m - a.i - a.j));
-}
-
-// The Gram matrix of the Bernstein polynomials of degree d over a triangle of area
-// (2d+1)(2d+2)/2, in the order of bernstein_indices(d): C(d,a) C(d,b) / C(2d,a+b), with C the
-// multinomial coefficients (integers, exact up to d = 10 in 64 bits). It does not depend on
-// the triangle, so it is computed once per number type and degree (the energy of 10^6
-// patches recomputed it from factorials every time).
-template <class FT>
-const std::vector<FT>& bernstein_gram_table(int d) {
-  static std::mutex mutex;
-  static std::vector<std::unique_ptr<const std::vector<FT>>> tables;
-  const std::lock_guard<std::mutex> lock(mutex);
-  if (tables.size() <= std::size_t(d))
-    tables.resize(std::size_t(d) + 1);
-  if (!tables[std::size_t(d)]) {
-    auto factorial = [](int k) -> FT {
-      FT f(1);
-      for (int i = 2; i <= k; ++i)
-        f = f * FT(i);
-      return f;
-    };
-    auto multinomial = [&](int m, const Multi_index& a) -> FT {
-      return factorial(m) / (factorial(a.i) * factorial(a.j) * factorial(a.k));
-    };
-    const auto coarse = bernstein_indices(d);
-    const std::size_t c = coarse.size();
-    auto table = std::make_unique<std::vector<FT>>(c * c);
-    for (std::size_t a = 0; a < c; ++a)
-      for (std::size_t b = 0; b < c; ++b) {
-        const Multi_index sum{coarse[a].i + coarse[b].i, coarse[a].j + coarse[b].j,
-                              coarse[a].k + coarse[b].k};
-        (*table)[a * c + b] =
-            multinomial(d, coarse[a]) * multinomial(d, coarse[b]) / multinomial(2 * d, sum);
-      }
-    tables[std::size_t(d)] = std::move(table);
-  }
-  return *tables[std::size_t(d)];
-}
-
-// The barycentric coordinates of the unit vectors e_x, e_y in the triangle (r, s, t) and the
-// scale of the Gram matrix of degree m - 2 (area and the factor m(m-1) of the second
-// derivatives); throws on a collinear triangle.
-template <class Point_2, class FT>
-void thin_plate_frame(int degree, const Point_2& r, const Point_2& s, const Point_2& t,
-                      std::array<FT, 3>& ex, std::array<FT, 3>& ey, FT& scale) {
-  const FT ux = s.x() - r.x(), uy = s.y() - r.y(), vx = t.x() - r.x(), vy = t.y() - r.y();
-  const FT det = ux * vy - uy * vx;
-  if (CGAL::is_zero(det))
-    throw Invalid_input("thin_plate_energy: degenerate triangle");
-  ex = {{(uy - vy) / det, vy / det, -uy / det}};
-  ey = {{(vx - ux) / det, -vx / det, ux / det}};
-  const FT area = CGAL::abs(det) / FT(2);
-  const int d = degree - 2;
-  scale = FT(degree * (degree - 1)) * FT(degree * (degree - 1)) * area /
-          (FT((2 * d + 1) * (2 * d + 2)) / FT(2));
-}
-
-} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineSplines
@@ -193,7 +129,7 @@ auto thin_plate_energy_factors(int degree, const Point_2& r, const Point_2& s, c
   `Fit::MINIMAL_ENERGY` fit. In floating point prefer the factors: \f$b^T G b\f$ cancels
   catastrophically on thin triangles.
   \tparam Point_2 a CGAL 2D point type
-  \pre `degree >= 2` and \f$(r,s,t)\f$ not collinear
+  \throws Invalid_input if `degree < 2` or \f$(r,s,t)\f$ is collinear
   \returns the matrix row by row (`G[a * n + b]`, n the number of indices)
   \param degree the degree
   \param r the first corner of the domain triangle

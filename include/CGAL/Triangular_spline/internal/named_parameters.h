@@ -15,6 +15,34 @@ namespace parameters {
 using namespace CGAL::parameters;
 
 } // namespace parameters
+
+// The tags of our parameters, all in one place as CGAL's are in
+// CGAL/STL_Extension/internal/parameters_interface.h: CGAL 5.5's list of parameter names is
+// closed, so ours live here and are looked up with CGAL::parameters::get_parameter() like
+// CGAL's.
+namespace internal_np {
+
+// certify_continuity() (certify.h)
+enum residual_tolerance_t { residual_tolerance };
+enum join_conditions_t { join_conditions };
+
+// make_c1_quintic_spline() (Xu/make_c1_quintic_spline.h)
+enum data_fit_t { data_fit };
+enum local_degree_t { local_degree };
+enum degree_selection_t { degree_selection };
+enum smoothing_t { smoothing };
+enum vertex_gradients_t { vertex_gradients };
+enum fit_statistics_t { fit_statistics };
+
+// Mesh_blending_surface (Blending/blending_parameters.h)
+enum blending_order_t { blending_order };
+enum blending_variant_t { blending_variant };
+enum vertex_surface_method_t { vertex_surface_method };
+enum least_squares_degree_t { least_squares_degree };
+enum normals_degree_t { normals_degree };
+enum least_interpolant_tolerance_t { least_interpolant_tolerance };
+
+} // namespace internal_np
 } // namespace Triangular_spline
 } // namespace CGAL
 

@@ -1,0 +1,267 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_INTERNAL_FIT_VERTEX_DATA_H
+#define CGAL_TRIANGULAR_SPLINE_INTERNAL_FIT_VERTEX_DATA_H
+
+// The body of fit_vertex_data() (Xu/fit_vertex_data.h), with the options of the global
+// solver and what it did, for tests and benchmarks.
+
+#include <CGAL/Triangular_spline/Value_traits.h>
+#include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
+#include <CGAL/Triangular_spline/Xu/Fit.h>
+#include <CGAL/Triangular_spline/Xu/estimate_gradients.h>
+#include <CGAL/Triangular_spline/Xu/local_polynomial_fit.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/free_value_solves.h>
+#include <CGAL/Triangular_spline/internal/schwarz_solver.h>
+
+#include <boost/container/static_vector.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+namespace internal {
+
+// Resolution (Local_polynomials::resolution()) below which a vertex's polynomial is trusted
+// fully, and above which not at all, in the Adaptive fit. Measured on the TOMS 792 node sets
+// and jittered grids: every vertex of smooth data sampled at h <= 1/8 has a resolution below
+// 1e-4; the sparse sets' spread over [0.05, 1].
+inline std::pair<double, double> adaptive_resolution_thresholds() {
+  return {0.1, 0.5};
+}
+// Rings around the untrusted vertices over which the Adaptive fit's energy solve extends.
+constexpr int adaptive_energy_margin_rings = 3;
+
+// fit_vertex_data() with the solver's options, and what the solver did (tests, benchmarks).
+template <class GeomTraits, class Value>
+Fit_statistics
+fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<Value>& values,
+                Fit fit, int local_degree, Degree_selection selection, double smoothing,
+                const std::vector<std::array<Value, 2>>& given_gradients,
+                const Schwarz_options& options, Schwarz_statistics* solver = nullptr) {
+  using FT = typename GeomTraits::FT;
+  using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
+  const auto& domain = spline.domain();
+  if (values.size() != domain.number_of_vertices())
+    throw Invalid_input("fit: " + std::to_string(values.size()) + " data values for " +
+                        std::to_string(domain.number_of_vertices()) + " vertices");
+  for (const Value& v : values)
+    if (!is_finite_value(v))
+      throw Invalid_input("fit: non-finite data value");
+  if (fit != Fit::APPROXIMATE && spline.corner_frame() != Corner_frame::CORNER_AND_TWO_STARS)
+    throw Invalid_input("fit: interpolation needs corner points to be prescribed "
+                        "(build the spline with Corner_frame::CORNER_AND_TWO_STARS)");
+  const bool given = !given_gradients.empty();
+  if (given) {
+    if (given_gradients.size() != domain.number_of_vertices())
+      throw Invalid_input("fit: " + std::to_string(given_gradients.size()) + " gradients for " +
+                          std::to_string(domain.number_of_vertices()) + " vertices");
+    for (const auto& g : given_gradients)
+      if (!is_finite_value(g[0]) || !is_finite_value(g[1]))
+        throw Invalid_input("fit: non-finite gradient");
+    if (fit == Fit::APPROXIMATE)
+      throw Invalid_input("fit: given gradients need an interpolating fit (not approximate)");
+    if (smoothing > 0)
+      throw Invalid_input("fit: given gradients are interpolated; smoothing would move the "
+                          "values they belong to");
+  }
+  std::vector<std::array<Value, 2>> gradients;
+  if (fit == Fit::TANGENT_PLANES)
+    gradients = given ? given_gradients : estimate_gradients(domain, values);
+  // With given gradients every star point is the tangent plane's: z_v + g_v.(w - v)/5 for
+  // the star f(v^4 w). Its corner region is then that plane, so the spline interpolates
+  // the gradient at every vertex.
+  auto given_star = [&](Slot s, Value& star) {
+    if (!given || spline.kind(s) != Slot_kind::STAR)
+      return false;
+    const auto label = spline.polar_label(s);
+    const auto [v, w] = label[0].second == 4 ? std::pair(label[0].first, label[1].first)
+                                             : std::pair(label[1].first, label[0].first);
+    const FT dx = (domain.point(w).x() - domain.point(v).x()) / FT(5);
+    const FT dy = (domain.point(w).y() - domain.point(v).y()) / FT(5);
+    star = values[v] + dx * given_gradients[v][0] + dy * given_gradients[v][1];
+    return true;
+  };
+  std::optional<Local_polynomials<GeomTraits, Value>> local;
+  // A windowed energy solve starts from the local polynomials' values: the first sweep's
+  // windows see them beyond their margins.
+  if (fit == Fit::LOCAL_POLYNOMIAL || fit == Fit::LEAST_SQUARES || fit == Fit::ADAPTIVE ||
+      (fit == Fit::MINIMAL_ENERGY && spline.number_of_free_parameters() > options.direct_limit))
+    local.emplace(domain, values, local_degree, selection);
+  Fit_statistics statistics;
+  if (local)
+    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+      ++statistics.vertices_by_degree[std::size_t(local->degree(v))];
+  // The value a slot should take from the data: polar blend, or tangent plane of the
+  // nearest corner(s) at the slot's domain point.
+  auto target = [&](Slot s) {
+    Value v = Value_traits<Value>::zero();
+    if (given_star(s, v))
+      return v;
+    const auto label = spline.polar_label(s);
+    if (fit == Fit::APPROXIMATE || fit == Fit::INTERPOLATE) {
+      for (const auto& [vertex, multiplicity] : label)
+        v = v + (FT(multiplicity) / FT(5)) * values[vertex];
+      return v;
+    }
+    int largest = 0;
+    for (const auto& entry : label)
+      largest = (std::max)(largest, entry.second);
+    if (local) {
+      std::array<std::pair<const typename GeomTraits::Point_2*, int>, 3> arguments;
+      std::size_t count = 0;
+      for (const auto& [vertex, multiplicity] : label)
+        arguments[count++] = {&domain.point(vertex), multiplicity};
+      int ties = 0;
+      for (const auto& entry : label) {
+        if (entry.second != largest)
+          continue;
+        v = v + local->polar_value(entry.first, arguments.begin(), arguments.begin() + count, 5);
+        ++ties;
+      }
+      return ties == 1 ? v : Value((FT(1) / FT(ties)) * v);
+    }
+    const auto x = spline.domain_point(s);
+    int ties = 0;
+    for (const auto& [vertex, multiplicity] : label) {
+      if (multiplicity != largest)
+        continue;
+      const FT dx = x.x() - domain.point(vertex).x(), dy = x.y() - domain.point(vertex).y();
+      v = v + values[vertex] + dx * gradients[vertex][0] + dy * gradients[vertex][1];
+      ++ties;
+    }
+    return Value((FT(1) / FT(ties)) * v);
+  };
+  if (!(smoothing >= 0) || !std::isfinite(smoothing))
+    throw Invalid_input("fit: the smoothing must be a finite number >= 0");
+  if (smoothing > 0 && fit != Fit::MINIMAL_ENERGY)
+    throw Invalid_input("fit: smoothing needs the minimal-energy fit");
+  // Adaptive fit: trust in each vertex's polynomial, from how well it resolves the data.
+  std::vector<double> trust;
+  bool blend_energy = false;
+  if (fit == Fit::ADAPTIVE) {
+    const auto [low, high] = internal::adaptive_resolution_thresholds();
+    trust.resize(domain.number_of_vertices());
+    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v) {
+      const double r = local->resolution(v);
+      trust[v] = r <= low ? 1.0 : r >= high ? 0.0 : (high - r) / (high - low);
+      ++statistics.vertices_by_trust[trust[v] >= 1 ? 0 : trust[v] > 0 ? 1 : 2];
+    }
+    // Fully trusted data need no solve: the fit is then Local_polynomial. The energy solve
+    // is linear in the untrusted region's size (windows beyond options.direct_limit
+    // unknowns), so it is never skipped.
+    blend_energy = statistics.vertices_by_trust[1] + statistics.vertices_by_trust[2] > 0;
+  }
+  internal::Schwarz_statistics solved;
+  if (fit == Fit::MINIMAL_ENERGY) {
+    solved = internal::minimal_energy_free_values(
+        spline, values, smoothing, given_star,
+        [&](Slot s) { return local ? target(s) : Value_traits<Value>::zero(); }, options);
+  } else if (blend_energy) {
+    auto nearest = [&](Slot s) {
+      const auto label = spline.polar_label(s);
+      int largest = 0;
+      for (const auto& entry : label)
+        largest = (std::max)(largest, entry.second);
+      boost::container::static_vector<std::uint32_t, 3> ties;
+      for (const auto& entry : label)
+        if (entry.second == largest)
+          ties.push_back(entry.first);
+      return ties;
+    };
+    // The energy solve covers the untrusted vertices and a margin of rings around them,
+    // with the local values beyond as boundary values. The margin keeps the local values'
+    // kinks in thin boundary triangles (tiny in value, huge in energy) out of the solve,
+    // which would otherwise bend the surface next to them to reduce their energy.
+    std::vector<int> ring(domain.number_of_vertices(), -1);
+    std::vector<std::uint32_t> front;
+    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+      if (trust[v] < 1) {
+        ring[v] = 0;
+        front.push_back(v);
+      }
+    for (int r = 1; r <= internal::adaptive_energy_margin_rings; ++r) {
+      std::vector<std::uint32_t> next;
+      for (std::uint32_t u : front) {
+        const auto [nb, ne] = domain.neighbours(u);
+        for (auto w = nb; w != ne; ++w)
+          if (ring[*w] < 0) {
+            ring[*w] = r;
+            next.push_back(*w);
+          }
+      }
+      front.swap(next);
+    }
+    solved = internal::minimal_energy_free_values(
+        spline, values, 0,
+        [&](Slot s, Value& fixed) {
+          if (given_star(s, fixed))
+            return true;
+          for (std::uint32_t v : nearest(s))
+            if (ring[v] >= 0)
+              return false;
+          fixed = target(s);
+          return true;
+        },
+        target, options);
+    // Blend: each untrusted vertex's share of a slot moves from its polynomial to the
+    // minimal-energy value in proportion to its distrust.
+    for (Slot s : spline.free_slots()) {
+      if (s < domain.number_of_vertices())
+        continue;
+      Value star;
+      if (given_star(s, star)) {
+        spline.set_free_value(s, star);
+        continue;
+      }
+      const auto ties = nearest(s);
+      bool trusted = true;
+      for (std::uint32_t v : ties)
+        trusted = trusted && trust[v] >= 1;
+      if (trusted) {
+        // solved only as part of the margin: the local value is the one to keep
+        if (std::any_of(ties.begin(), ties.end(), [&](std::uint32_t v) { return ring[v] >= 0; }))
+          spline.set_free_value(s, target(s));
+        continue;
+      }
+      const auto label = spline.polar_label(s);
+      std::array<std::pair<const typename GeomTraits::Point_2*, int>, 3> arguments;
+      std::size_t count = 0;
+      for (const auto& [vertex, multiplicity] : label)
+        arguments[count++] = {&domain.point(vertex), multiplicity};
+      const Value smooth = spline.value(s);
+      Value v = Value_traits<Value>::zero();
+      for (std::uint32_t w : ties) {
+        const FT t(trust[w]);
+        v = v + t * local->polar_value(w, arguments.begin(), arguments.begin() + count, 5) +
+            (FT(1) - t) * smooth;
+      }
+      spline.set_free_value(s, ties.size() == 1 ? v : Value((FT(1) / FT(int(ties.size()))) * v));
+    }
+  } else if (fit == Fit::LEAST_SQUARES) {
+    solved = internal::least_squares_free_values(spline, values, target, given_star, options);
+  } else {
+    for (Slot s : spline.free_slots())
+      spline.set_free_value(s, target(s));
+  }
+  spline.propagate();
+  if (solver)
+    *solver = solved;
+  return statistics;
+}
+
+} // namespace internal
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_INTERNAL_FIT_VERTEX_DATA_H

@@ -1,0 +1,143 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_INTERNAL_NETWORK_EVALUATION_H
+#define CGAL_TRIANGULAR_SPLINE_INTERNAL_NETWORK_EVALUATION_H
+
+// How evaluate.h reads a TriangularSplineNetwork: its patch and value types, a located
+// query in the coordinates of its patch, and the loop over located queries.
+
+#include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/Domain/Domain_locator.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
+
+#include <CGAL/assertions.h>
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+namespace internal {
+
+// The patch type of a TriangularSplineNetwork.
+template <class Network>
+using Network_patch_t =
+    std::remove_cv_t<std::remove_reference_t<decltype(std::declval<const Network&>().patch(
+        std::declval<typename Network::Index>()))>>;
+
+// The value type of a TriangularSplineNetwork's patches.
+template <class Network>
+using Network_value_t = typename Network_patch_t<Network>::Value_type;
+
+// A patch source reading the network (by reference when the network returns references).
+template <class Network>
+auto patch_source(const Network& network) {
+  return [&network](typename Network::Index f) -> decltype(auto) { return network.patch(f); };
+}
+
+// The locator must number the faces as the network's domain does: built on it, or on an
+// identical copy (checked cheaply).
+template <class Network, class GeomTraits>
+bool is_locator_of(const Network& network, const Domain_locator<GeomTraits>& locator) {
+  return &locator.domain() == &network.domain() ||
+         (locator.domain().number_of_faces() == network.domain().number_of_faces() &&
+          locator.domain().number_of_vertices() == network.domain().number_of_vertices());
+}
+
+// Converts barycentric weights w.r.t. the vertices of a domain face (face(f) order) into
+// weights w.r.t. the vertices of the patch of that face, which may list the same three
+// points in another order. Matching is by exact point equality, so exact zeros and grid
+// weights carry over unchanged; if the patch is over another triangle, the point is
+// rebuilt and its coordinates are recomputed with respect to the patch.
+template <class GeomTraits, class Value>
+class Face_to_patch {
+public:
+  using FT = typename GeomTraits::FT;
+  using Point_2 = typename GeomTraits::Point_2;
+  using Weights = std::array<FT, 3>;
+
+  Face_to_patch(const Planar_domain<GeomTraits>& domain,
+                typename Planar_domain<GeomTraits>::Index f,
+                const Bezier_triangle<GeomTraits, Value>& patch)
+      : m_patch(patch) {
+    const auto& t = domain.face(f);
+    std::array<bool, 3> used{{false, false, false}};
+    for (std::size_t c = 0; c < 3; ++c) {
+      m_corners[c] = &domain.point(t[c]);
+      m_to_patch[c] = 3;
+      for (std::size_t v = 0; v < 3; ++v)
+        if (!used[v] && patch.vertex(static_cast<int>(v)) == *m_corners[c]) {
+          m_to_patch[c] = v;
+          used[v] = true;
+          break;
+        }
+      m_matched = m_matched && m_to_patch[c] < 3;
+    }
+  }
+
+  // returns the domain point with face weights `w`
+  Point_2 point(const Weights& w) const {
+    const FT x = w[0] * m_corners[0]->x() + w[1] * m_corners[1]->x() + w[2] * m_corners[2]->x();
+    const FT y = w[0] * m_corners[0]->y() + w[1] * m_corners[1]->y() + w[2] * m_corners[2]->y();
+    return Point_2(x, y);
+  }
+
+  // returns the weights of the same point w.r.t. the patch's vertices
+  Weights patch_weights(const Weights& w) const {
+    if (!m_matched)
+      return m_patch.barycentric_coordinates(point(w));
+    Weights result;
+    for (std::size_t c = 0; c < 3; ++c)
+      result[m_to_patch[c]] = w[c];
+    return result;
+  }
+
+  Value evaluate(const Weights& w) const { return m_patch.evaluate_barycentric(patch_weights(w)); }
+
+  // derivatives w.r.t. (x, y) do not depend on the order of the patch's vertices
+  Point_jet<Value> jet(const Weights& w, int order) const {
+    return m_patch.jet_barycentric(patch_weights(w), order);
+  }
+
+  bool matched() const { return m_matched; }
+
+private:
+  const Bezier_triangle<GeomTraits, Value>& m_patch;
+  std::array<const Point_2*, 3> m_corners;
+  std::array<std::size_t, 3> m_to_patch;
+  bool m_matched = true;
+};
+
+// Locates each query and calls callback(q, &value), or callback(q, nullptr) outside.
+template <class Network, class GeomTraits, class Callback>
+void for_each_location(const Network& network, const Domain_locator<GeomTraits>& locator,
+                       const std::vector<typename GeomTraits::Point_2>& queries,
+                       Callback callback) {
+  CGAL_precondition(is_locator_of(network, locator));
+  using Patch = Network_patch_t<Network>;
+  const auto& domain = network.domain();
+  auto patch = patch_source(network);
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const auto location = locator.locate_snapped(queries[q]);
+    if (!location) {
+      callback(q, nullptr);
+      continue;
+    }
+    // binds to the source's reference, or extends the life of the returned patch
+    const Patch& bezier = patch(location->face);
+    const Face_to_patch<GeomTraits, typename Patch::Value_type> frame(domain, location->face,
+                                                                      bezier);
+    const typename Patch::Value_type value = frame.evaluate(location->barycentric);
+    callback(q, &value);
+  }
+}
+
+} // namespace internal
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_INTERNAL_NETWORK_EVALUATION_H

@@ -1,0 +1,86 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_INTERNAL_SCATTERED_DATA_CHECKS_H
+#define CGAL_TRIANGULAR_SPLINE_INTERNAL_SCATTERED_DATA_CHECKS_H
+
+// What every scattered-data reader does once the points are read (IO/scattered_data.h,
+// IO/npy.h): duplicates merged or refused, and at least one triangle's worth of points.
+
+#include <CGAL/Triangular_spline/Domain/Scattered_data.h>
+#include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/text.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+namespace internal {
+
+// What every scattered-data reader checks once the points are read (read_xyz(), and
+// scattered_data_from_npy() in npy.h): exact duplicates merged (the first occurrence kept,
+// in input order), contradicting duplicates refused, at least one triangle's worth of points.
+// `where(i)` names point i in messages ("file:line", "file: row r").
+template <class GeomTraits, class Where>
+Scattered_data<GeomTraits>
+finish_scattered_data(const std::vector<typename GeomTraits::Point_2>& points,
+                      const std::vector<typename GeomTraits::FT>& values,
+                      const std::vector<std::array<typename GeomTraits::FT, 2>>& gradients,
+                      const std::string& source, Where where) {
+  const bool with_gradients = !gradients.empty();
+  // Duplicates: sort exactly by (x, y), then compare neighbours; the first occurrence of
+  // each point is kept, in input order.
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  const auto less_xy = GeomTraits().less_xy_2_object();
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return less_xy(points[a], points[b]); });
+  std::vector<char> keep(points.size(), 1);
+  Scattered_data<GeomTraits> data;
+  for (std::size_t i = 1; i < order.size(); ++i) {
+    const std::size_t first = order[i - 1], second = order[i];
+    if (points[first] != points[second])
+      continue;
+    if (values[first] != values[second])
+      throw Invalid_input(where(first) + " and " + where(second) + ": the same point " +
+                          internal::point_to_string(points[first]) + " has different heights " +
+                          format_number(values[first]) + " and " + format_number(values[second]));
+    if (with_gradients && gradients[first] != gradients[second])
+      throw Invalid_input(where(first) + " and " + where(second) + ": the same point " +
+                          internal::point_to_string(points[first]) + " has different gradients");
+    keep[second] = 0;
+    order[i] = first; // later copies compare with the kept one
+    ++data.merged_duplicates;
+  }
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (keep[i]) {
+      data.points.push_back(points[i]);
+      data.values.push_back(values[i]);
+      if (with_gradients)
+        data.gradients.push_back(gradients[i]);
+    }
+  const std::size_t n = data.points.size();
+  if (n < 3)
+    throw Invalid_input(source + ": " + std::to_string(n) + " distinct point" +
+                        (n == 1 ? "" : "s") + ", at least 3 are needed for a triangle");
+  const auto collinear = GeomTraits().collinear_2_object();
+  bool all_collinear = true;
+  for (std::size_t i = 2; i < n && all_collinear; ++i)
+    all_collinear = collinear(data.points[0], data.points[1], data.points[i]);
+  if (all_collinear)
+    throw Invalid_input(source + ": all " + std::to_string(n) +
+                        " points are collinear: no triangle");
+  return data;
+}
+
+} // namespace internal
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_INTERNAL_SCATTERED_DATA_CHECKS_H

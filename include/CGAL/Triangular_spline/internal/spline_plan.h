@@ -1,0 +1,111 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_INTERNAL_SPLINE_PLAN_H
+#define CGAL_TRIANGULAR_SPLINE_INTERNAL_SPLINE_PLAN_H
+
+// The plan of C1_quintic_spline: where each control point is stored (shared with the
+// dimension count of Spline_space.h), and the barycentric weights of its propagation rules.
+
+#include <CGAL/Triangular_spline/Multi_index.h>
+
+#include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/assertions.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+namespace CGAL {
+namespace Triangular_spline {
+namespace internal {
+
+// The storage layout of a quintic spline's control points, shared by the spline and by the
+// independent dimension count: vertices, then 4 slots per edge, then 6 per face.
+template <class Domain>
+std::uint32_t quintic_vertex_slot(const Domain&, typename Domain::Index v) {
+  return static_cast<std::uint32_t>(v);
+}
+template <class Domain>
+std::uint32_t quintic_edge_slot(const Domain& d, typename Domain::Index e, int t) {
+  return static_cast<std::uint32_t>(d.number_of_vertices() + 4 * std::size_t(e) + std::size_t(t));
+}
+template <class Domain>
+std::uint32_t quintic_face_slot(const Domain& d, typename Domain::Index f, int t) {
+  return static_cast<std::uint32_t>(d.number_of_vertices() + 4 * d.number_of_edges() +
+                                    6 * std::size_t(f) + std::size_t(t));
+}
+template <class Domain>
+std::uint32_t quintic_slot(const Domain& d, typename Domain::Index f, const Multi_index& index) {
+  const auto& t = d.face(f);
+  for (int v = 0; v < 3; ++v)
+    if (index[v] == 5)
+      return quintic_vertex_slot(d, t[std::size_t(v)]);
+  for (int v = 0; v < 3; ++v)
+    if (index[v] == 0) {
+      // on the edge opposite v: slot 4 - (copies of the edge's smaller vertex)
+      const auto e = d.face_edge(f, v);
+      const auto lo = d.edge(e)[0];
+      int lo_count = 0;
+      for (int w = 0; w < 3; ++w)
+        if (t[std::size_t(w)] == lo)
+          lo_count = index[w];
+      return quintic_edge_slot(d, e, 4 - lo_count);
+    }
+  for (int v = 0; v < 3; ++v)
+    if (index[v] == 3)
+      return quintic_face_slot(d, f, v);
+  for (int v = 0; v < 3; ++v)
+    if (index[v] == 1)
+      return quintic_face_slot(d, f, 3 + v);
+  CGAL_error_msg("not a quintic multi-index");
+  return 0;
+}
+
+// Barycentric coordinates of x with respect to (a, b, c), which the exact predicates have
+// found non-collinear. With an inexact number type a nearly collinear frame can round its
+// determinant to zero (or to the wrong size): below the error bound the weights are
+// recomputed with exact rationals and rounded once, so they are never infinite and always
+// accurate to the last bit.
+template <class Point_2>
+auto barycentric_weights(const Point_2& x, const Point_2& a, const Point_2& b, const Point_2& c) {
+  using FT = std::decay_t<decltype(x.x())>;
+  auto compute = [](const auto& x, const auto& a, const auto& b, const auto& c) {
+    using T = std::decay_t<decltype(x[0])>;
+    const T d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    const T mu = ((x[0] - a[0]) * (c[1] - a[1]) - (x[1] - a[1]) * (c[0] - a[0])) / d;
+    const T nu = ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / d;
+    const T lambda = T(1) - mu - nu;
+    return std::array<T, 3>{{lambda, mu, nu}};
+  };
+  auto coords = [](const Point_2& p) { return std::array<FT, 2>{{p.x(), p.y()}}; };
+  if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
+    return compute(coords(x), coords(a), coords(b), coords(c));
+  } else {
+    const double bx = CGAL::to_double(b.x() - a.x()), by = CGAL::to_double(b.y() - a.y());
+    const double cx = CGAL::to_double(c.x() - a.x()), cy = CGAL::to_double(c.y() - a.y());
+    const double d = bx * cy - by * cx;
+    const double scale =
+        (std::max)(std::abs(bx), std::abs(by)) * (std::max)(std::abs(cx), std::abs(cy));
+    if (std::abs(d) > 1e-10 * scale)
+      return compute(coords(x), coords(a), coords(b), coords(c));
+    using Q = CGAL::Exact_rational;
+    auto exact = [](const Point_2& p) {
+      return std::array<Q, 2>{{Q(CGAL::to_double(p.x())), Q(CGAL::to_double(p.y()))}};
+    };
+    const std::array<Q, 3> w = compute(exact(x), exact(a), exact(b), exact(c));
+    return std::array<FT, 3>{
+        {FT(CGAL::to_double(w[0])), FT(CGAL::to_double(w[1])), FT(CGAL::to_double(w[2]))}};
+  }
+}
+
+} // namespace internal
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_INTERNAL_SPLINE_PLAN_H
