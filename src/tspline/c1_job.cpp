@@ -344,10 +344,11 @@ Json run(const C1_job& job, std::ostream& out) {
         "control values reach " + format_number(control_magnitude) +
         ", more than 10^6 times the data's largest |z| (" + format_number(data_magnitude) +
         "): the surface is meaningless near the triangles that carry them" + scale_hint);
-  if (spline.max_propagation_weight() > 1e3)
-    warnings.push_back("propagation weights reach " +
-                       format_number(spline.max_propagation_weight()) +
-                       ": control points multiply the data's errors by that much" + scale_hint);
+  const double amplification = spline.propagation_amplification();
+  if (amplification > 1e3)
+    warnings.push_back(
+        "the propagation amplifies inconsistent prescribed points " + format_number(amplification) +
+        " times: control points multiply the data's errors by that much" + scale_hint);
   timings["range_checks"] = clock.lap();
 
   std::size_t numerical_frames = 0;
@@ -417,19 +418,28 @@ Json run(const C1_job& job, std::ostream& out) {
   report["thin_frames_rerouted"] = thin_frames;
   report["propagation_weight_bound"] = Spline::propagation_weight_bound;
   report["max_propagation_weight"] = spline.max_propagation_weight();
+  report["propagation_amplification"] = amplification;
   {
     // Where the largest weights are: by the role of the computed point.
     std::array<double, 5> by_kind{};
-    for (const auto& rule : spline.rules())
+    std::array<std::size_t, 5> above_bound{};
+    for (const auto& rule : spline.rules()) {
+      const std::size_t kind = std::size_t(spline.kind(rule.target));
+      double largest = 0;
       for (int i = 0; i < rule.size; ++i)
-        by_kind[std::size_t(spline.kind(rule.target))] =
-            (std::max)(by_kind[std::size_t(spline.kind(rule.target))],
-                       std::abs(CGAL::to_double(rule.weights[std::size_t(i)])));
-    Json kinds = Json::object();
+        largest = (std::max)(largest, std::abs(CGAL::to_double(rule.weights[std::size_t(i)])));
+      by_kind[kind] = (std::max)(by_kind[kind], largest);
+      above_bound[kind] += largest > Spline::propagation_weight_bound ? 1 : 0;
+    }
+    Json kinds = Json::object(), counts = Json::object();
     const char* names[] = {"corner", "star", "edge_middle", "corner_inner", "flip"};
-    for (std::size_t k = 0; k < 5; ++k)
+    for (std::size_t k = 0; k < 5; ++k) {
       kinds[names[k]] = by_kind[k];
+      counts[names[k]] = above_bound[k];
+    }
     report["max_propagation_weight_by_role"] = kinds;
+    report["rules_above_weight_bound_by_role"] = counts;
+    report["near_singular_vertices"] = spline.near_singular_vertices().size();
   }
   Json moved = Json::array();
   for (const auto& m : moves) {
@@ -506,7 +516,9 @@ Json run(const C1_job& job, std::ostream& out) {
                 : std::string(" (re-routed)"))
         << ", singular vertices: " << spline.singular_vertices().size()
         << ", thin frames re-routed: " << thin_frames << "\n"
-        << "  largest propagation weight: " << spline.max_propagation_weight() << "\n"
+        << "  largest propagation weight: " << spline.max_propagation_weight()
+        << " (amplification of inconsistent prescribed points: "
+        << spline.propagation_amplification() << ")\n"
         << "  free parameters: " << spline.number_of_free_parameters();
     if (morgan_scott)
       out << " (Morgan-Scott dimension " << *morgan_scott << ")";

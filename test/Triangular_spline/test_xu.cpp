@@ -1030,6 +1030,9 @@ TEST(StablePropagation, ThinFramesAreReroutedWithBoundedWeights) {
     for (const FT& v : spline.values())
       largest = (std::max)(largest, std::abs(CGAL::to_double(v)));
     EXPECT_LT(largest, 1e3) << degrees;
+    EXPECT_LE(spline.propagation_amplification(),
+              2 * C1_quintic_spline<Exact_kernel>::propagation_weight_bound)
+        << degrees;
     EXPECT_TRUE(certify(spline).certified) << degrees;
     // The free count (the dimension of the spline space) is unchanged by the re-routing.
     EXPECT_EQ(spline.number_of_free_parameters(),
@@ -1043,6 +1046,76 @@ TEST(StablePropagation, ThinFramesAreReroutedWithBoundedWeights) {
   Random_rationals random(13);
   randomize(spline, random);
   EXPECT_LT(certify(spline).max_residual, 1e-12 * 1e3);
+}
+
+namespace {
+
+// Vertex 0 with four neighbours on the axes, (-1, delta) instead of (-1, 0): the frames of
+// its edges to (1, 0) and (-1, delta) are exactly degenerate (apexes (0, +-1)), those of the
+// other two are thin for small delta; delta = 0 makes the vertex singular. Outer square.
+template <class K>
+Planar_domain<K> near_singular_domain(const typename K::FT& delta) {
+  using P = typename K::Point_2;
+  std::vector<P> points{P(0, 0), P(1, 0),  P(0, 1),   P(-1, delta), P(0, -1),
+                        P(3, 3), P(-3, 3), P(-3, -3), P(3, -3)};
+  std::vector<std::array<Index, 3>> faces{{{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 4}}, {{0, 4, 1}},
+                                          {{1, 5, 2}}, {{2, 5, 6}}, {{2, 6, 3}}, {{3, 6, 7}},
+                                          {{3, 7, 4}}, {{4, 7, 8}}, {{4, 8, 1}}, {{1, 8, 5}}};
+  return Planar_domain<K>(points, faces);
+}
+
+} // namespace
+
+TEST(StablePropagation, NearSingularVerticesAreTheOnlyPlaceOfLargeEdgeWeights) {
+  // 1e-2, 1e-4 and 1e-8 degrees from singular: every edge end at vertex 0 is thin or
+  // degenerate, the cycle of links around it is not implied, and one link keeps its regular
+  // rule. The vertex is reported near-singular, every rule above the bound computes a point
+  // of an edge at it (no other rule of the plan exceeds the bound), the spline is exactly
+  // C^1, and the free count is the dimension of S^1_5. At delta = 0 the vertex is singular
+  // instead: one more free parameter, no rule above the bound.
+  using FT = Exact_kernel::FT;
+  using Spline = C1_quintic_spline<Exact_kernel>;
+  for (const double degrees : {1e-2, 1e-4, 1e-8, 0.0}) {
+    const FT delta = FT(std::tan(degrees * 3.14159265358979 / 180));
+    const auto domain = near_singular_domain<Exact_kernel>(delta);
+    Spline spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    const bool singular = degrees == 0.0;
+    EXPECT_EQ(spline.near_singular_vertices(),
+              singular ? std::vector<Index>{} : std::vector<Index>{0})
+        << degrees;
+    EXPECT_EQ(spline.singular_vertices().size(), singular ? 1u : 0u) << degrees;
+    std::size_t above = 0;
+    for (const auto& rule : spline.rules()) {
+      double largest = 0;
+      for (int i = 0; i < rule.size; ++i)
+        largest = (std::max)(largest, std::abs(CGAL::to_double(rule.weights[std::size_t(i)])));
+      if (largest <= Spline::propagation_weight_bound)
+        continue;
+      ++above;
+      EXPECT_EQ(spline.kind(rule.target), TS::Slot_kind::EDGE_MIDDLE) << degrees;
+      const auto label = spline.polar_label(rule.target);
+      EXPECT_TRUE(std::any_of(label.begin(), label.end(), [](const auto& entry) {
+        return entry.first == 0;
+      })) << degrees;
+    }
+    EXPECT_EQ(above, singular ? 0u : 1u) << degrees;
+    Random_rationals random(17);
+    for (auto s : spline.free_slots())
+      spline.set_free_value(s, FT(random.integer(-100, 100)) / FT(100));
+    spline.propagate();
+    // The large weight does not amplify: random signs on the free points outside the corner
+    // regions stay at the scale of a sign (the weights combine points whose deviations cancel).
+    EXPECT_LT(spline.propagation_amplification(), 8) << degrees;
+    if (!singular) {
+      EXPECT_GT(spline.max_propagation_weight(), 1e4) << degrees;
+    }
+    EXPECT_TRUE(certify(spline).certified) << degrees;
+    EXPECT_EQ(spline.number_of_free_parameters(),
+              3 * domain.number_of_vertices() + 3 * domain.number_of_faces() +
+                  domain.number_of_interior_edges() + 3 * domain.number_of_boundary_edges() +
+                  (singular ? 1 : 0))
+        << degrees;
+  }
 }
 
 TEST(StablePropagation, LocalFitOfSmoothDataStaysAccurateAtThinFrames) {

@@ -25,6 +25,7 @@
 #include <limits>
 #include <string>
 #include <utility>
+#include <random>
 #include <vector>
 
 namespace CGAL {
@@ -120,7 +121,19 @@ public:
   using Degenerate_frame = Degenerate_frame_t<Index>;
   /// the bound on the weights of the edge rules: an edge end whose regular rule (Xu's
   /// condition 3.5 solved for its edge-middle point) would use a weight above it is
-  /// re-routed as a thin frame, where every weight is at most about 2
+  /// re-routed as a thin frame, where every weight is at most about 2.
+  ///
+  /// Three kinds of rule can still exceed it, each a property of the triangulation rather
+  /// than of one frame (on random points about 2 rules in 10^4):
+  /// - star points: the affine image of a vertex's three prescribed points; large where
+  ///   every edge at the vertex is close to one line (a vertex on a nearly straight hull).
+  ///   These cannot amplify inconsistent data: any three values lie on one plane.
+  /// - flip points of an edge whose two triangles are both thin across it (a fan of
+  ///   slivers): the middle diamond is solved for the larger flip coefficient, so the
+  ///   weight is the ratio of the quadrilateral's largest sub-triangle to the larger face,
+  ///   about 1/sin of the faces' smallest angle. Re-routing the edge moves the same ratio
+  ///   into the corner-inner links.
+  /// - the one regular link at each of the `near_singular_vertices()`.
   static constexpr double propagation_weight_bound = 16;
   /// an invalid slot index, marking an unused source of a `Rule`
   static constexpr Slot null_slot = (std::numeric_limits<Slot>::max)();
@@ -277,6 +290,51 @@ public:
   /// amplify a change of a prescribed point (1 for a value copied unchanged)
   /// \returns the largest absolute rule coefficient
   double max_propagation_weight() const { return m_max_weight; }
+  /// returns an estimate of how much the propagation amplifies inconsistent prescribed
+  /// points: the largest absolute control value when every corner region is zero and every
+  /// other free point is an independent random sign (fixed seed, computed in double on a
+  /// copy; one pass over the rules). A single weight above `propagation_weight_bound` need
+  /// not amplify: at a near-singular vertex the large weights combine points whose
+  /// deviations cancel (a vertex 1e-8 degrees from singular: largest weight 1e10, this
+  /// estimate 4). Corner regions are left out because any three values are one plane: their
+  /// weights extrapolate a tangent plane, they cannot amplify an inconsistency. With every
+  /// weight at most the bound the estimate stays below about twice the bound (a rule's
+  /// weights sum to one).
+  /// \returns the estimated amplification (0 if no point outside the corner regions is free)
+  double propagation_amplification() const {
+    std::vector<double> x(m_values.size(), 0.0);
+    std::mt19937 random(1);
+    for (Slot s : m_free_slots) {
+      const Slot_kind k = kind(s);
+      if (k != Slot_kind::CORNER && k != Slot_kind::STAR)
+        x[s] = (random() & 1) ? 1.0 : -1.0;
+    }
+    double largest = 0;
+    for (const Rule& r : m_rules) {
+      double v = 0;
+      for (int i = 0; i < r.size; ++i)
+        v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
+      x[r.target] = v;
+      largest = (std::max)(largest, std::abs(v));
+    }
+    for (Slot s : m_free_slots)
+      largest = (std::max)(largest, std::abs(x[s]));
+    return largest;
+  }
+  /// returns how often the plan was built: 1, plus one rebuild per round of dependency
+  /// cycles broken (a thin re-routing makes corner-inner points at one end depend on those
+  /// at the other end; a chain of them can close a cycle, and then the least thin
+  /// re-routing on it goes back to its regular rule)
+  /// \returns the number of plan builds
+  int plan_rounds() const { return m_plan_rounds; }
+  /// returns the near-singular vertices: interior vertices at which every edge is thin or
+  /// degenerate, but not every one degenerate (those are singular). Their re-routed links
+  /// would close a cycle that, unlike a singular vertex's, is not implied, so the thinnest
+  /// link keeps its regular rule: its edge-middle point takes weights of about \f$1/\delta\f$,
+  /// \f$\delta\f$ the sine of the angle by which the vertex misses being singular (see
+  /// `propagation_weight_bound`).
+  /// \returns the near-singular vertices, each once
+  const std::vector<Index>& near_singular_vertices() const { return m_near_singular; }
   /// returns the interior singular vertices (each adds one free parameter)
   /// \returns the interior singular vertices (each adds one free parameter)
   const std::vector<Index>& singular_vertices() const { return m_degenerate.singular_vertices; }
@@ -570,8 +628,8 @@ private:
   // Chooses, per interior edge, the end (if any) whose edge-middle point is re-routed
   // through the middle diamond: exactly degenerate ends (and, in double, ends collinear up
   // to rounding) always; otherwise the end whose regular weights exceed
-  // `propagation_weight_bound`, the larger one if both do. `allow_thin[v] == 0` forbids
-  // re-routing thin frames at v (used to break the rare dependency cycles).
+  // `propagation_weight_bound`, the larger one if both do. `allow_thin[e] == 0` forbids
+  // re-routing a thin frame of edge e (used to break the rare dependency cycles).
   std::vector<Edge_route> route_edges(const std::vector<char>& allow_thin) const {
     const Index E = static_cast<Index>(m_domain.number_of_edges());
     std::vector<Edge_route> routes(E);
@@ -603,7 +661,7 @@ private:
       Edge_route route;
       if (exact_end[k] || numerical_end[k])
         route.kind = End_route::DEGENERATE;
-      else if (weight[std::size_t(side)] > propagation_weight_bound && allow_thin[r])
+      else if (weight[std::size_t(side)] > propagation_weight_bound && allow_thin[e])
         route.kind = End_route::THIN;
       else
         continue;
@@ -617,20 +675,20 @@ private:
   }
 
   void build_plan() {
-    const Index V = static_cast<Index>(m_domain.number_of_vertices());
     m_degenerate = find_degenerate_frames(m_domain);
-    std::vector<char> allow_thin(V, 1);
+    std::vector<char> allow_thin(m_domain.number_of_edges(), 1);
     // A thin re-routing makes corner-inner points depend on an edge-middle point of the
-    // other end; chains of such ends could close a cycle. Then the thin re-routings at the
-    // vertices on the cycle are dropped and the plan rebuilt (exact degenerate ones never
-    // depend on edge points, so this ends).
+    // other end; chains of such ends could close a cycle. Then the least thin re-routing on
+    // each cycle is dropped and the plan rebuilt (exact degenerate ones never depend on edge
+    // points, so this ends).
     for (;;) {
+      ++m_plan_rounds;
       m_rules.clear();
       m_free.assign(m_values.size(), 0);
       m_free_slots.clear();
-      std::vector<Index> thin_vertex_of_rule;
-      build_plan_once(allow_thin, thin_vertex_of_rule);
-      if (order_rules(thin_vertex_of_rule, allow_thin))
+      std::vector<Index> thin_edge_of_rule;
+      build_plan_once(allow_thin, thin_edge_of_rule);
+      if (order_rules(thin_edge_of_rule, allow_thin))
         break;
     }
     for (Slot s = 0; s < m_free.size(); ++s)
@@ -641,8 +699,7 @@ private:
       m_max_weight = (std::max)(m_max_weight, largest_abs(r.weights));
   }
 
-  void build_plan_once(const std::vector<char>& allow_thin,
-                       std::vector<Index>& thin_vertex_of_rule) {
+  void build_plan_once(const std::vector<char>& allow_thin, std::vector<Index>& thin_edge_of_rule) {
     const Index V = static_cast<Index>(m_domain.number_of_vertices());
     const Index E = static_cast<Index>(m_domain.number_of_edges());
     const Index F = static_cast<Index>(m_domain.number_of_faces());
@@ -673,10 +730,11 @@ private:
                  barycentric(*region_points[k], a, b, c));
       }
     }
-    thin_vertex_of_rule.assign(m_rules.size(), Domain::null_index);
+    thin_edge_of_rule.assign(m_rules.size(), Domain::null_index);
 
     std::vector<Edge_route> routes = route_edges(allow_thin);
     m_frames.clear();
+    m_near_singular.clear();
 
     // 2. Corner-inner points at re-routed ends. At vertex r of a re-routed edge (r, s) the
     // corner diamond reads star = mu_l CI_l + mu_s EM_r + mu_r CI_r, with
@@ -718,8 +776,10 @@ private:
               (thinnest == k || route.regular_weight < routes[eb[thinnest]].regular_weight))
             thinnest = i;
         }
-        if (thinnest != k)
+        if (thinnest != k) {
           routes[eb[thinnest]] = Edge_route();
+          m_near_singular.push_back(r);
+        }
       }
       // Start after an unlinked position, so that paths are not cut in two.
       std::size_t start = 0;
@@ -795,7 +855,7 @@ private:
           else
             add_rule(corner_inner_slot(fb[solved], r), {{star, ci_other, null_slot}},
                      {{FT(1) / mu_solved, -mu_other / mu_solved, FT(0)}}, 2);
-          thin_vertex_of_rule.push_back(link.with_edge_point ? r : Domain::null_index);
+          thin_edge_of_rule.push_back(link.with_edge_point ? link.edge : Domain::null_index);
           inner_dependent[3 * std::size_t(fb[solved]) +
                           std::size_t(position_in_face(fb[solved], r))] = 1;
         };
@@ -843,7 +903,7 @@ private:
         add_rule(edge_middle_slot(e, r),
                  {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
                  barycentric(m_domain.point(s), pl, m_domain.point(r), pr));
-        thin_vertex_of_rule.push_back(Domain::null_index);
+        thin_edge_of_rule.push_back(Domain::null_index);
       }
     }
 
@@ -863,7 +923,7 @@ private:
       m_free[flip_slot(ef[0], e)] = m_free[flip_slot(ef[1], e)] = 1;
       add_rule(edge_middle_slot(e, r),
                {{flip_slot(ef[0], e), edge_middle_slot(e, s), flip_slot(ef[1], e)}}, route.mu);
-      thin_vertex_of_rule.push_back(Domain::null_index);
+      thin_edge_of_rule.push_back(Domain::null_index);
       Degenerate_frame frame{e, r, m_domain.opposite_vertex(ef[0], e),
                              m_domain.opposite_vertex(ef[1], e), false};
       frame.numerical = route.kind == End_route::DEGENERATE && !std::isinf(route.regular_weight);
@@ -894,14 +954,27 @@ private:
           flip_slot(other_face, e),
           {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
           left_free ? right_from_left : left_from_right);
-      thin_vertex_of_rule.push_back(Domain::null_index);
+      thin_edge_of_rule.push_back(Domain::null_index);
     }
+  }
+
+  // The largest regular weight of the two ends of interior edge e.
+  double regular_weight(Index e) const {
+    const auto& ends = m_domain.edge(e);
+    const auto& ef = m_domain.edge_faces(e);
+    const Point_2& pl = m_domain.point(m_domain.opposite_vertex(ef[0], e));
+    const Point_2& pr = m_domain.point(m_domain.opposite_vertex(ef[1], e));
+    const Point_2 &lo = m_domain.point(ends[0]), &hi = m_domain.point(ends[1]);
+    return (std::max)(largest_abs(barycentric(hi, pl, lo, pr)),
+                      largest_abs(barycentric(lo, pl, hi, pr)));
   }
 
   // Puts the rules in an order in which every source is computed before it is read
   // (depth-first, keeping the emission order where it already is one). Returns false on a
-  // dependency cycle, after forbidding thin re-routings at the vertices whose rules are on it.
-  bool order_rules(const std::vector<Index>& thin_vertex_of_rule, std::vector<char>& allow_thin) {
+  // dependency cycle, after forbidding the thin re-routing of the least thin edge on it (only
+  // the part of the depth-first stack above the repeated rule is the cycle: forbidding every
+  // thin edge on the stack left thousands of thin frames regular, with weights up to 10^3).
+  bool order_rules(const std::vector<Index>& thin_edge_of_rule, std::vector<char>& allow_thin) {
     const std::size_t R = m_rules.size();
     constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
     std::vector<std::uint32_t> rule_of(m_values.size(), none);
@@ -925,9 +998,23 @@ private:
             continue;
           if (state[source] == 1) {
             cycle = true;
-            for (const auto& [on_stack, unused] : stack)
-              if (thin_vertex_of_rule[on_stack] != Domain::null_index)
-                allow_thin[thin_vertex_of_rule[on_stack]] = 0;
+            Index least = Domain::null_index;
+            double least_weight = std::numeric_limits<double>::infinity();
+            for (std::size_t i = stack.size(); i-- > 0;) {
+              const Index e = thin_edge_of_rule[stack[i].first];
+              if (e != Domain::null_index) {
+                const double w = regular_weight(e);
+                if (w < least_weight) {
+                  least_weight = w;
+                  least = e;
+                }
+              }
+              if (stack[i].first == source)
+                break;
+            }
+            CGAL_assertion(least != Domain::null_index); // only thin links close cycles
+            if (least != Domain::null_index)
+              allow_thin[least] = 0;
             continue;
           }
           state[source] = 1;
@@ -985,6 +1072,8 @@ private:
   Degenerate_frame_analysis<Index> m_degenerate;
   std::vector<Degenerate_frame> m_frames;
   double m_max_weight = 0;
+  int m_plan_rounds = 0; // plan builds: 1 + the rebuilds that broke dependency cycles
+  std::vector<Index> m_near_singular;
   std::vector<std::size_t> m_dependent_offsets;
   std::vector<std::uint32_t> m_dependents;
   std::vector<char> m_queued;
