@@ -17,6 +17,7 @@
 #include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 #include <CGAL/Triangular_spline/Xu/make_c1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
+#include <CGAL/Triangular_spline/internal/parallel.h>
 
 #include <algorithm>
 #include <chrono>
@@ -360,6 +361,64 @@ TEST(Certificate, NegativeOrderIsBadInput) {
   } catch (const TS::Invalid_input& e) {
     EXPECT_NE(std::string(e.what()).find("continuity order -1 is negative"), std::string::npos)
         << e.what();
+  }
+}
+
+TEST(Certificate, AllCoresGiveTheSerialVerdictEdgeByEdge) {
+  // 12000 random points, about 36000 interior edges: checked on every core (20000 edges per
+  // thread at the least). Each entry must equal the serial check of its edge, in edge order,
+  // on random C^1 patches with a nudged control point in every 5000th face (failing edges).
+  using K = Epick;
+  namespace TSP = TS::parameters;
+  CGAL::Random random_points(5);
+  std::vector<K::Point_2> points;
+  for (int i = 0; i < 12000; ++i)
+    points.emplace_back(random_points.get_double(), random_points.get_double());
+  C1_quintic_spline<K> spline(delaunay_of<K>(points));
+  Random_rationals random(23);
+  randomize(spline, random);
+  const auto& domain = spline.domain();
+  std::vector<C1_quintic_spline<K>::Patch> patches;
+  for (Index f = 0; f < domain.number_of_faces(); ++f) {
+    patches.push_back(spline.patch(f));
+    if (f % 5000 == 0)
+      patches.back().set_control_point(TS::Multi_index{1, 2, 2},
+                                       patches.back().control_point(1, 2, 2) + 1e-3);
+  }
+  const TS::Patch_network<K> network(domain, patches);
+  const auto certificate = TS::certify_continuity(network, 1, TSP::residual_tolerance(1e-9));
+  ASSERT_GT(certificate.interior_edges, 20000u);
+  EXPECT_GT(certificate.failed_edges, 0u);
+  std::size_t i = 0;
+  for (Index e = 0; e < domain.number_of_edges(); ++e) {
+    if (domain.is_boundary_edge(e))
+      continue;
+    const auto& ef = domain.edge_faces(e);
+    const auto serial = TS::check_C1_join(patches[ef[0]], patches[ef[1]], 1e-9);
+    ASSERT_LT(i, certificate.edges.size());
+    const auto& c = certificate.edges[i++];
+    EXPECT_EQ(c.edge, e);
+    EXPECT_EQ(c.holds, serial.holds);
+    EXPECT_EQ(c.achieved_order, serial.achieved_order);
+    EXPECT_EQ(c.residual, serial.max_residual); // bit for bit
+  }
+  EXPECT_EQ(i, certificate.edges.size());
+}
+
+TEST(Parallel, EveryIndexOnceAndTheSmallestIndexThrows) {
+  std::vector<int> visits(100000, 0);
+  TS::internal::parallel_for_index(visits.size(), 4, [&](std::size_t i) { ++visits[i]; });
+  EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), 100000);
+  for (std::size_t threads : {1u, 2u, 3u, 8u}) {
+    try {
+      TS::internal::parallel_for_index(100000, threads, [](std::size_t i) {
+        if (i == 77777 || i == 5000 || i == 99999)
+          throw TS::Invalid_input("at " + std::to_string(i));
+      });
+      ADD_FAILURE() << "no exception with " << threads << " threads";
+    } catch (const TS::Invalid_input& e) {
+      EXPECT_EQ(std::string(e.what()), "at 5000") << threads;
+    }
   }
 }
 

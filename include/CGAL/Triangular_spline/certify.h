@@ -8,6 +8,7 @@
 #include <CGAL/Triangular_spline/continuity.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 #include <CGAL/Triangular_spline/internal/named_parameters.h>
+#include <CGAL/Triangular_spline/internal/parallel.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Named_function_parameters.h>
@@ -152,25 +153,35 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
   certificate.exact = CGAL::Algebraic_structure_traits<typename Geom_traits::FT>::Is_exact::value;
   certificate.tolerance = tolerance > 0 ? tolerance : 0;
   certificate.lowest_order = k;
-  certificate.edges.reserve(domain.number_of_interior_edges());
-  for (Index e = 0; e < domain.number_of_edges(); ++e) {
-    if (domain.is_boundary_edge(e))
-      continue;
-    const auto& ef = domain.edge_faces(e);
-    const Join_report report =
-        k == 1 && conditions == Join_conditions::EXTENSION
-            ? check_C1_join(network.patch(ef[0]), network.patch(ef[1]), certificate.tolerance)
-            : check_join(network.patch(ef[0]), network.patch(ef[1]), k, conditions,
-                         certificate.tolerance);
-    Edge_certificate c;
-    c.edge = e;
-    c.vertices = {{domain.edge(e)[0], domain.edge(e)[1]}};
-    c.achieved_order = report.achieved_order;
-    c.holds = report.holds;
-    c.residual = report.max_residual;
-    c.residual_log10 = report.max_residual_log10;
-    c.zero = std::all_of(report.conditions.begin(), report.conditions.end(),
-                         [](const Join_condition& j) { return j.zero; });
+  std::vector<Index> interior;
+  interior.reserve(domain.number_of_interior_edges());
+  for (Index e = 0; e < domain.number_of_edges(); ++e)
+    if (!domain.is_boundary_edge(e))
+      interior.push_back(e);
+  // The edges are independent: checked on all cores in double (exact checks allocate, and
+  // exact networks are small), the verdicts collected in edge order.
+  certificate.edges.resize(interior.size());
+  internal::parallel_for_index(
+      interior.size(), certificate.exact ? 1 : internal::thread_count(interior.size(), 20000),
+      [&](std::size_t i) {
+        const Index e = interior[i];
+        const auto& ef = domain.edge_faces(e);
+        const Join_report report =
+            k == 1 && conditions == Join_conditions::EXTENSION
+                ? check_C1_join(network.patch(ef[0]), network.patch(ef[1]), certificate.tolerance)
+                : check_join(network.patch(ef[0]), network.patch(ef[1]), k, conditions,
+                             certificate.tolerance);
+        Edge_certificate& c = certificate.edges[i];
+        c.edge = e;
+        c.vertices = {{domain.edge(e)[0], domain.edge(e)[1]}};
+        c.achieved_order = report.achieved_order;
+        c.holds = report.holds;
+        c.residual = report.max_residual;
+        c.residual_log10 = report.max_residual_log10;
+        c.zero = std::all_of(report.conditions.begin(), report.conditions.end(),
+                             [](const Join_condition& j) { return j.zero; });
+      });
+  for (const Edge_certificate& c : certificate.edges) {
     if (!(c.residual <= certificate.max_residual))
       certificate.max_residual = c.residual;
     if (!(c.residual_log10 <= certificate.max_residual_log10))
@@ -180,7 +191,6 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
       ++certificate.failed_edges;
     if (!c.zero)
       ++certificate.nonzero_edges;
-    certificate.edges.push_back(c);
   }
   certificate.interior_edges = certificate.edges.size();
   certificate.certified = certificate.failed_edges == 0;

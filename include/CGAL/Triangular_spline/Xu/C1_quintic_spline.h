@@ -302,23 +302,23 @@ public:
   /// weights sum to one).
   /// \returns the estimated amplification (0 if no point outside the corner regions is free)
   double propagation_amplification() const {
-    std::vector<double> x(m_values.size(), 0.0);
+    std::vector<float> x(m_values.size(), 0.0f); // float: an estimate, half the memory
     std::mt19937 random(1);
     for (Slot s : m_free_slots) {
       const Slot_kind k = kind(s);
       if (k != Slot_kind::CORNER && k != Slot_kind::STAR)
-        x[s] = (random() & 1) ? 1.0 : -1.0;
+        x[s] = (random() & 1) ? 1.0f : -1.0f;
     }
     double largest = 0;
     for (const Rule& r : m_rules) {
       double v = 0;
       for (int i = 0; i < r.size; ++i)
         v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
-      x[r.target] = v;
+      x[r.target] = static_cast<float>(v);
       largest = (std::max)(largest, std::abs(v));
     }
     for (Slot s : m_free_slots)
-      largest = (std::max)(largest, std::abs(x[s]));
+      largest = (std::max)(largest, double(std::abs(x[s])));
     return largest;
   }
   /// returns how often the plan was built: 1, plus one rebuild per round of dependency

@@ -14,7 +14,10 @@
 #include <CGAL/Triangular_spline/Xu/local_polynomial_fit.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 #include <CGAL/Triangular_spline/internal/free_value_solves.h>
+#include <CGAL/Triangular_spline/internal/parallel.h>
 #include <CGAL/Triangular_spline/internal/schwarz_solver.h>
+
+#include <CGAL/Algebraic_structure_traits.h>
 
 #include <boost/container/static_vector.hpp>
 
@@ -98,6 +101,12 @@ fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<
   if (fit == Fit::LOCAL_POLYNOMIAL || fit == Fit::LEAST_SQUARES || fit == Fit::ADAPTIVE ||
       (fit == Fit::MINIMAL_ENERGY && spline.number_of_free_parameters() > options.direct_limit))
     local.emplace(domain, values, local_degree, selection);
+  // Per-slot work runs on all cores in double; exact values allocate, and exact builds are
+  // small.
+  const std::size_t threads =
+      CGAL::Algebraic_structure_traits<FT>::Is_exact::value
+          ? 1
+          : internal::thread_count(spline.number_of_free_parameters(), 50000);
   Fit_statistics statistics;
   if (local)
     for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
@@ -202,15 +211,31 @@ fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<
       }
       front.swap(next);
     }
+    // The slots the energy solve keeps fixed take their local values first, on all cores
+    // (each slot's value depends on the slot alone).
+    auto outside_solve = [&](Slot s) {
+      for (std::uint32_t v : nearest(s))
+        if (ring[v] >= 0)
+          return false;
+      return true;
+    };
+    const std::vector<Slot>& free_slots = spline.free_slots();
+    internal::parallel_for_index(free_slots.size(), threads, [&](std::size_t i) {
+      const Slot s = free_slots[i];
+      Value star;
+      if (given_star(s, star))
+        spline.set_free_value(s, star);
+      else if (outside_solve(s))
+        spline.set_free_value(s, target(s));
+    });
     solved = internal::minimal_energy_free_values(
         spline, values, 0,
         [&](Slot s, Value& fixed) {
           if (given_star(s, fixed))
             return true;
-          for (std::uint32_t v : nearest(s))
-            if (ring[v] >= 0)
-              return false;
-          fixed = target(s);
+          if (!outside_solve(s))
+            return false;
+          fixed = spline.value(s); // target(s), set above
           return true;
         },
         target, options);
@@ -251,8 +276,10 @@ fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<
   } else if (fit == Fit::LEAST_SQUARES) {
     solved = internal::least_squares_free_values(spline, values, target, given_star, options);
   } else {
-    for (Slot s : spline.free_slots())
-      spline.set_free_value(s, target(s));
+    const std::vector<Slot>& free_slots = spline.free_slots();
+    internal::parallel_for_index(free_slots.size(), threads, [&](std::size_t i) {
+      spline.set_free_value(free_slots[i], target(free_slots[i]));
+    });
   }
   spline.propagate();
   if (solver)

@@ -1,0 +1,73 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_INTERNAL_PARALLEL_H
+#define CGAL_TRIANGULAR_SPLINE_INTERNAL_PARALLEL_H
+
+// Independent per-index work on all cores. Each index is handled by exactly one thread and
+// writes only its own results, so the output does not depend on the number of threads.
+
+#include <algorithm>
+#include <cstddef>
+#include <exception>
+#include <thread>
+#include <vector>
+
+namespace CGAL {
+namespace Triangular_spline {
+namespace internal {
+
+// The threads for n independent items: one per core, but none for fewer than `grain` items
+// each (a thread costs about 50 microseconds to start).
+inline std::size_t thread_count(std::size_t n, std::size_t grain) {
+  const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
+  return (std::min)(cores, n / (std::max<std::size_t>)(grain, 1) + 1);
+}
+
+// Calls f(i) for every i in [0, n), in interleaved blocks of 1024 over `threads` threads
+// (1: the calling thread only). An exception thrown by f is rethrown after every thread has
+// stopped: the one of the smallest index, as a serial loop would have thrown it.
+template <class F>
+void parallel_for_index(std::size_t n, std::size_t threads, const F& f) {
+  threads = (std::max<std::size_t>)(threads, 1);
+  if (threads == 1) {
+    for (std::size_t i = 0; i < n; ++i)
+      f(i);
+    return;
+  }
+  constexpr std::size_t block = 1024;
+  std::vector<std::exception_ptr> error(threads);
+  std::vector<std::size_t> error_at(threads, n);
+  auto run = [&](std::size_t t) {
+    for (std::size_t first = t * block; first < n; first += threads * block) {
+      const std::size_t last = (std::min)(n, first + block);
+      for (std::size_t i = first; i < last; ++i) {
+        try {
+          f(i);
+        } catch (...) {
+          error[t] = std::current_exception();
+          error_at[t] = i;
+          return;
+        }
+      }
+    }
+  };
+  std::vector<std::thread> workers;
+  for (std::size_t t = 1; t < threads; ++t)
+    workers.emplace_back(run, t);
+  run(0);
+  for (std::thread& worker : workers)
+    worker.join();
+  std::size_t first = threads;
+  for (std::size_t t = 0; t < threads; ++t)
+    if (error[t] && (first == threads || error_at[t] < error_at[first]))
+      first = t;
+  if (first != threads)
+    std::rethrow_exception(error[first]);
+}
+
+} // namespace internal
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_INTERNAL_PARALLEL_H
