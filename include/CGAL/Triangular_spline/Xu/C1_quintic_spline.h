@@ -26,6 +26,7 @@
 #include <string>
 #include <utility>
 #include <random>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -969,31 +970,56 @@ private:
                       largest_abs(barycentric(lo, pl, hi, pr)));
   }
 
-  // Puts the rules in an order in which every source is computed before it is read
-  // (depth-first, keeping the emission order where it already is one). Returns false on a
+  // Puts the rules in an order in which every source is computed before it is read (the
+  // emission order where it already is one, then the rest depth-first). Returns false on a
   // dependency cycle, after forbidding the thin re-routing of the least thin edge on it (only
   // the part of the depth-first stack above the repeated rule is the cycle: forbidding every
   // thin edge on the stack left thousands of thin frames regular, with weights up to 10^3).
   bool order_rules(const std::vector<Index>& thin_edge_of_rule, std::vector<char>& allow_thin) {
     const std::size_t R = m_rules.size();
     constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
-    std::vector<std::uint32_t> rule_of(m_values.size(), none);
-    for (std::size_t i = 0; i < R; ++i)
-      rule_of[m_rules[i].target] = static_cast<std::uint32_t>(i);
-    std::vector<unsigned char> state(R, 0); // 0 new, 1 on the stack, 2 done, 3 moved
+    // 1. One pass in emission order: a rule whose sources are all free or computed by an
+    // earlier kept rule stays where it is (all rules but those reading a thin link's edge
+    // point, and what depends on them). Only the others need the depth-first search.
+    std::vector<char> ready(m_values.size(), 0);
+    for (std::size_t s = 0; s < m_free.size(); ++s)
+      ready[s] = m_free[s];
+    std::vector<unsigned char> state(R, 0); // 0 deferred, 1 on the stack, 2 done
+    std::vector<std::uint32_t> deferred;
+    for (std::size_t i = 0; i < R; ++i) {
+      const Rule& rule = m_rules[i];
+      bool sources_ready = true;
+      for (int j = 0; j < rule.size; ++j)
+        sources_ready = sources_ready && ready[rule.sources[std::size_t(j)]];
+      if (sources_ready) {
+        ready[rule.target] = 1;
+        state[i] = 2;
+      } else {
+        deferred.push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+    if (deferred.empty())
+      return true;
+    // 2. Depth-first over the deferred rules (the kept ones are done): their order after
+    // the kept rules, or a dependency cycle.
+    std::unordered_map<Slot, std::uint32_t> rule_of;
+    rule_of.reserve(deferred.size());
+    for (std::uint32_t i : deferred)
+      rule_of.emplace(m_rules[i].target, i);
     std::vector<std::uint32_t> order;
-    order.reserve(R);
+    order.reserve(deferred.size());
     std::vector<std::pair<std::uint32_t, int>> stack; // rule, next source to visit
     bool cycle = false;
-    for (std::size_t root = 0; root < R; ++root) {
+    for (std::uint32_t root : deferred) {
       if (state[root])
         continue;
-      stack.push_back({static_cast<std::uint32_t>(root), 0});
+      stack.push_back({root, 0});
       state[root] = 1;
       while (!stack.empty()) {
         auto& [rule, next] = stack.back();
         if (next < m_rules[rule].size) {
-          const std::uint32_t source = rule_of[m_rules[rule].sources[std::size_t(next++)]];
+          const auto found = rule_of.find(m_rules[rule].sources[std::size_t(next++)]);
+          const std::uint32_t source = found == rule_of.end() ? none : found->second;
           if (source == none || state[source] == 2)
             continue;
           if (state[source] == 1) {
@@ -1028,21 +1054,21 @@ private:
     }
     if (cycle)
       return false;
-    // Position p takes rule order[p]: permuted in place, cycle by cycle (a sorted copy of
-    // the rules was the largest allocation of a whole c1 run).
-    for (std::size_t start = 0; start < R; ++start) {
-      if (state[start] == 3)
+    // 3. The kept rules move up in place (a sorted copy of all rules was the largest
+    // allocation of a whole c1 run), the deferred ones follow in their order.
+    std::vector<Rule> moved;
+    moved.reserve(order.size());
+    for (std::uint32_t i : order)
+      moved.push_back(m_rules[i]);
+    std::size_t w = 0;
+    for (std::size_t i = 0, d = 0; i < R; ++i) {
+      if (d < deferred.size() && deferred[d] == i) {
+        ++d;
         continue;
-      Rule first = m_rules[start];
-      std::size_t p = start;
-      while (order[p] != start) {
-        m_rules[p] = m_rules[order[p]];
-        state[p] = 3;
-        p = order[p];
       }
-      m_rules[p] = first;
-      state[p] = 3;
+      m_rules[w++] = m_rules[i];
     }
+    std::copy(moved.begin(), moved.end(), m_rules.begin() + std::ptrdiff_t(w));
     return true;
   }
 
