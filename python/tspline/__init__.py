@@ -224,7 +224,7 @@ class C1Interpolator(Interpolator):
         The data values.
     fit : str
         How the free control points are set: ``"adaptive"`` (default: local polynomials
-        where they resolve the data, least thin-plate energy where not), ``"local"``,
+        where they resolve the data, least thin-plate energy with a tension where not), ``"local"``,
         ``"energy"``, ``"lsq"``, ``"tangent"``, ``"interpolate"``, ``"approximate"``
         (does not interpolate), as ``tspline c1 --fit``.
     smoothing : float, optional

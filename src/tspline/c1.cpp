@@ -31,8 +31,9 @@ int run_c1(const std::vector<std::string>& args) {
           "named x, y, z, or all the columns of an (n, 3) array");
   cl.text(job.fit, "fit", "MODE",
           "adaptive (interpolate; local polynomials where they resolve the data, "
-          "least thin-plate energy where they do not: accurate on dense and sparse "
-          "data), local (interpolate; every prescribed point from the local polynomial of its "
+          "least thin-plate energy with a tension toward the piecewise linear "
+          "interpolant where they do not: accurate on dense and sparse data), local (interpolate; "
+          "every prescribed point from the local polynomial of its "
           "nearest vertex, a weighted least-squares fit of degree up to --degree: "
           "reproduces polynomials of that degree where the data determine them), energy "
           "(interpolate with the least thin-plate energy: the fairest surface, best on "

@@ -84,7 +84,12 @@ enum class Fit {
   /// polynomial relative to a plane's) gives a trust \f$\tau_v\f$: 1 for \f$\rho_v \le 0.1\f$,
   /// 0 for \f$\rho_v \ge 0.5\f$, linear between. Free points whose nearest vertices are all
   /// trusted take their local value (exactly as `LOCAL_POLYNOMIAL`); the others are chosen by
-  /// least thin-plate energy over the untrusted vertices and three rings around them, with
+  /// least energy over the untrusted vertices and three rings around them: the thin-plate
+  /// energy plus a tension \f$(2 (1 - \bar\tau_f) / h^2) \int_f |\nabla s - \nabla g|^2\f$
+  /// per face \f$f\f$ (\f$\bar\tau_f\f$ its vertices' mean trust, \f$h^2\f$ the area per
+  /// vertex, \f$g\f$ the piecewise linear interpolant of the data), which pulls data that no
+  /// polynomial resolves toward \f$g\f$ and vanishes on linear data (TOMS 792's sparse node
+  /// sets: 3% to 7% lower SSE/SSM than the thin plate alone). With
   /// the local values beyond as boundary values (the margin keeps the kinks of local values
   /// in thin boundary triangles, tiny in value but huge in energy, from bending the surface
   /// next to them), then each nearest vertex's share

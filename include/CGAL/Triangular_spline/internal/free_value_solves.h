@@ -118,21 +118,59 @@ double thin_triangle_weight(const Point_2& p, const Point_2& q, const Point_2& r
   return quality >= 0.1 ? 1.0 : std::pow(quality / 0.1, 3);
 }
 
+// The tension term of the Adaptive fit's energy, int_T |grad f - grad g|^2 for a quintic f
+// over T and a linear g, in factored form as thin_plate_energy_factors(): f_x and f_y have
+// the quartic coefficients 5 L_x b and 5 L_y b, M is the quartic Gram matrix times 25 (so
+// that (L_x b)^T M (L_x b) = int f_x^2), and int_T f_x = (area / 3) 1^T L_x b.
+struct Tension_factors {
+  Eigen::Matrix<double, 15, 21, Eigen::RowMajor> first[2];
+  Eigen::Matrix<double, 15, 15> gram;
+  double area = 0;
+  std::array<double, 3> ex{}, ey{}; // barycentric coordinates of the unit vectors
+};
+inline Tension_factors tension_factors(const std::array<std::array<double, 2>, 3>& corner) {
+  Tension_factors t;
+  const double ux = corner[1][0] - corner[0][0], uy = corner[1][1] - corner[0][1];
+  const double vx = corner[2][0] - corner[0][0], vy = corner[2][1] - corner[0][1];
+  const double det = ux * vy - uy * vx;
+  t.ex = {{(uy - vy) / det, vy / det, -uy / det}};
+  t.ey = {{(vx - ux) / det, -vx / det, ux / det}};
+  t.area = std::abs(det) / 2;
+  const auto coarse = bernstein_indices(4);
+  for (int p = 0; p < 2; ++p) {
+    const auto& e = p == 0 ? t.ex : t.ey;
+    t.first[p].setZero();
+    for (std::size_t g = 0; g < coarse.size(); ++g)
+      for (int i = 0; i < 3; ++i) {
+        Multi_index a = coarse[g];
+        ++a[i];
+        t.first[p](Eigen::Index(g), Eigen::Index(bernstein_position(5, a))) += e[std::size_t(i)];
+      }
+  }
+  const std::vector<double>& table = bernstein_gram_table<double>(4);
+  const double scale = 25 * t.area / 45; // 45: the area of the table's triangle, C(10, 2)
+  for (Eigen::Index a = 0; a < 15; ++a)
+    for (Eigen::Index b = 0; b < 15; ++b)
+      t.gram(a, b) = scale * table[std::size_t(a * 15 + b)];
+  return t;
+}
+
 // The quadratic objectives of the least-squares and minimal-energy fits, as a sum of face
 // terms in the slot values s = R x + c (affine_slots()):
-//   energy_weight[f] * E_f(s)  (thin-plate energy of face f's patch; skipped when 0), and
+//   energy_weight[f] * E_f(s)  (thin-plate energy of face f's patch; skipped when 0),
+//   tension_weight[f] * int_f |grad s - grad g_f|^2, g_f the linear interpolant of the
+//   face's corner values (only with fixed corners; no term when tension_weight is empty),
 //   misfit_weight * |s_t - target_t|^2 for the misfit slots t that face f owns (each slot
 //   is owned by the first face containing it).
 // It is minimised by schwarz_minimise(): one direct solve up to options.direct_limit
 // unknowns, overlapping windows beyond. Unknowns start from initial(s) (the windows' first
 // sweep sees them); the result is written to the free slots, converted to FT.
 template <class GeomTraits, class Value, class Initial>
-Schwarz_statistics
-minimise_slot_quadratic(C1_quintic_spline<GeomTraits, Value>& spline, const Affine_slots<Value>& a,
-                        const std::vector<double>& energy_weight,
-                        const std::vector<std::pair<std::uint32_t, Value>>& misfits,
-                        double misfit_weight, const Initial& initial,
-                        const Schwarz_options& options, int default_sweeps, const char* what) {
+Schwarz_statistics minimise_slot_quadratic(
+    C1_quintic_spline<GeomTraits, Value>& spline, const Affine_slots<Value>& a,
+    const std::vector<double>& energy_weight, const std::vector<double>& tension_weight,
+    const std::vector<std::pair<std::uint32_t, Value>>& misfits, double misfit_weight,
+    const Initial& initial, const Schwarz_options& options, int default_sweeps, const char* what) {
   using FT = typename GeomTraits::FT;
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   using Traits = Value_traits<Value>;
@@ -253,6 +291,30 @@ minimise_slot_quadratic(C1_quintic_spline<GeomTraits, Value>& spline, const Affi
         B.noalias() -= w * (MX.transpose() * (L * C));
       }
     }
+    if (!tension_weight.empty() && tension_weight[f] > 0) {
+      const auto& t = domain.face(f);
+      std::array<std::array<double, 2>, 3> corner;
+      for (std::size_t i = 0; i < 3; ++i)
+        corner[i] = {
+            {CGAL::to_double(domain.point(t[i]).x()), CGAL::to_double(domain.point(t[i]).y())}};
+      const Tension_factors tf = tension_factors(corner);
+      const double w = tension_weight[f];
+      for (int p = 0; p < 2; ++p) {
+        const auto& e = p == 0 ? tf.ex : tf.ey;
+        X.noalias() = tf.first[p] * R;
+        MX.noalias() = tf.gram * X;
+        H.noalias() += w * (X.transpose() * MX);
+        B.noalias() -= w * (MX.transpose() * (tf.first[p] * C));
+        // - 2 grad g . int grad s: the corners are constants, so g_f comes from them
+        const Eigen::VectorXd column_sums = X.colwise().sum().transpose();
+        for (int d = 0; d < D; ++d) {
+          double g = 0;
+          for (std::size_t i = 0; i < 3; ++i)
+            g += e[i] * a.constant[t[i]][std::size_t(d)];
+          B.col(d) += (w * g * tf.area / 3) * column_sums;
+        }
+      }
+    }
     for (std::size_t m = misfit_start[f]; m < misfit_start[f + 1]; ++m) {
       const auto& [s, target] = face_misfits[m];
       const std::size_t i = std::size_t(std::find(slot.begin(), slot.end(), s) - slot.begin());
@@ -306,42 +368,51 @@ Schwarz_statistics least_squares_free_values(C1_quintic_spline<GeomTraits, Value
     if (!a.rows[s].empty())
       misfits.emplace_back(std::uint32_t(s), target(static_cast<Slot>(s)));
   return minimise_slot_quadratic(spline, a,
-                                 std::vector<double>(spline.domain().number_of_faces(), 0), misfits,
-                                 1.0, target, options, 1, "least-squares");
+                                 std::vector<double>(spline.domain().number_of_faces(), 0), {},
+                                 misfits, 1.0, target, options, 1, "least-squares");
 }
 
 // Minimal thin-plate energy (Fit::MINIMAL_ENERGY): corners fixed to the data, the free slots
 // for which fixed(s, value) is true fixed to that value, and min sum_f b_f^T G_f b_f over
 // the others; with smoothing > 0 the corners are unknowns too and the objective is
 // sum_v |s(v) - z_v|^2 + smoothing * h^2 * energy, h^2 the domain's area per vertex (so
-// that smoothing is dimensionless: invariant under scaling of x and y). Faces whose
-// control points are all fixed only add a constant and are skipped. The unknowns start
-// from initial(s) (used only by the windows of large problems).
+// that smoothing is dimensionless: invariant under scaling of x and y). With a tension per
+// vertex (interpolating only; empty: none) the energy has the term (tau_f / h^2) int_f
+// |grad s - grad g|^2, tau_f the mean of face f's vertices' tensions and g the piecewise
+// linear interpolant of the data: it pulls badly resolved data toward g and vanishes, like
+// the thin-plate energy, on linear data. Faces whose control points are all
+// fixed only add a constant and are skipped. The unknowns start from initial(s) (used only
+// by the windows of large problems).
 template <class GeomTraits, class Value, class Fixed, class Initial>
 Schwarz_statistics minimal_energy_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
                                               const std::vector<Value>& values, double smoothing,
+                                              const std::vector<double>& tension,
                                               const Fixed& fixed, const Initial& initial,
                                               const Schwarz_options& options = {}) {
   const auto& domain = spline.domain();
   const bool interpolating = !(smoothing > 0);
+  CGAL_precondition(interpolating || tension.empty());
   const auto a = affine_slots(spline, values, interpolating, fixed);
-  double weight = 1;
-  if (!interpolating) {
-    double area = 0;
-    for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
-      const auto& t = domain.face(f);
-      const auto &p = domain.point(t[0]), &q = domain.point(t[1]), &r = domain.point(t[2]);
-      area += std::abs(CGAL::to_double((q.x() - p.x()) * (r.y() - p.y()) -
-                                       (q.y() - p.y()) * (r.x() - p.x()))) /
-              2;
-    }
-    weight = smoothing * area / double(domain.number_of_vertices());
-  }
-  std::vector<double> energy_weight(domain.number_of_faces());
+  double area = 0;
   for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
     const auto& t = domain.face(f);
-    energy_weight[f] =
-        weight * thin_triangle_weight(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+    const auto &p = domain.point(t[0]), &q = domain.point(t[1]), &r = domain.point(t[2]);
+    area += std::abs(CGAL::to_double((q.x() - p.x()) * (r.y() - p.y()) -
+                                     (q.y() - p.y()) * (r.x() - p.x()))) /
+            2;
+  }
+  const double h2 = area / double(domain.number_of_vertices());
+  const double weight = interpolating ? 1 : smoothing * h2;
+  std::vector<double> energy_weight(domain.number_of_faces()), tension_weight;
+  if (!tension.empty())
+    tension_weight.resize(domain.number_of_faces());
+  for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f) {
+    const auto& t = domain.face(f);
+    const double thin =
+        thin_triangle_weight(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+    energy_weight[f] = weight * thin;
+    if (!tension.empty())
+      tension_weight[f] = (tension[t[0]] + tension[t[1]] + tension[t[2]]) / (3 * h2) * thin;
   }
   // s(v) is the corner slot of v, an unknown when smoothing
   std::vector<std::pair<std::uint32_t, Value>> misfits;
@@ -349,8 +420,8 @@ Schwarz_statistics minimal_energy_free_values(C1_quintic_spline<GeomTraits, Valu
     for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
       if (!a.rows[v].empty())
         misfits.emplace_back(v, values[v]);
-  return minimise_slot_quadratic(spline, a, energy_weight, misfits, 1.0, initial, options, 2,
-                                 "minimal-energy");
+  return minimise_slot_quadratic(spline, a, energy_weight, tension_weight, misfits, 1.0, initial,
+                                 options, 2, "minimal-energy");
 }
 
 } // namespace internal
