@@ -67,9 +67,13 @@ def evaluation_grid(m=200):
 
 
 def fit_arguments(spec):
-    """'local:5:largest' -> ('local', ['--degree', '5', '--degree-selection', 'largest'])."""
+    """'local:5:largest' -> ('local', ['--degree', '5', '--degree-selection', 'largest']);
+    a part 't=TAU' gives '--tension TAU' ('energy:t=2', 'adaptive:t=0')."""
     parts = spec.split(":")
     extra = []
+    for part in [q for q in parts[1:] if q.startswith("t=")]:
+        extra += ["--tension", part[2:]]
+    parts = [q for q in parts if not q.startswith("t=")]
     if len(parts) > 1:
         extra += ["--degree", parts[1]]
     if len(parts) > 2:

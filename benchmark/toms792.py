@@ -29,7 +29,8 @@ grid points, as its methods extrapolate; the numbers here are therefore not dire
 comparable with the paper's where a hull does not cover the square: sets 1, 3, 4.)
 
 Methods: `tspline c1 --fit FIT` for every FIT of --fits (a spec 'local:3' means
-'--fit local --degree 3', as in convergence.py), run on a temporary `.xyz` file with
+'--fit local --degree 3', 'energy:t=2' '--fit energy --tension 2', as in convergence.py),
+run on a temporary `.xyz` file with
 `--query`/`--values`; and scipy.interpolate.CloughTocher2DInterpolator on the same nodes
 (skipped if scipy is not installed). A data set that tspline rejects is reported, not fatal;
 a NaN at a grid point inside the hull is reported and that point left out of the sums.

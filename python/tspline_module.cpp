@@ -202,7 +202,8 @@ struct Fit_settings {
   int degree = 5;
   std::string degree_selection = "cv";
   double smoothing = 0;
-  int y_exponent = 0; // rescale: the domain's y is the data's times 2^y_exponent
+  std::optional<double> tension; // unset: the fit's default
+  int y_exponent = 0;            // rescale: the domain's y is the data's times 2^y_exponent
 };
 
 // The Python-visible spline: any network of the library with its locator.
@@ -392,7 +393,7 @@ public:
                             m_settings.degree_selection == "largest"
                                 ? TS::Degree_selection::LARGEST
                                 : TS::Degree_selection::CROSS_VALIDATION,
-                            m_settings.smoothing, g);
+                            m_settings.smoothing, g, m_settings.tension);
         if (m_settings.y_exponent != 0)
           copy->map_domain(scaled_y(copy->domain(), -m_settings.y_exponent));
       }
@@ -613,9 +614,14 @@ std::shared_ptr<Spline> make_c1(const Points& points, const Points& values,
             fit, TSP::local_degree(
                      settings.degree,
                      TSP::degree_selection(
-                         selection, TSP::smoothing(settings.smoothing,
-                                                   TSP::vertex_gradients(
-                                                       g, TSP::fit_statistics(statistics))))))));
+                         selection,
+                         TSP::smoothing(settings.smoothing,
+                                        TSP::tension(settings.tension ? *settings.tension
+                                                     : fit == TS::Fit::ADAPTIVE
+                                                         ? TS::internal::adaptive_tension
+                                                         : 0.0,
+                                                     TSP::vertex_gradients(
+                                                         g, TSP::fit_statistics(statistics)))))))));
     // Fitted in rescaled coordinates: back onto the data's own points (exact).
     if (settings.y_exponent != 0)
       spline->map_domain(scaled_y(spline->domain(), -settings.y_exponent));
@@ -1454,13 +1460,14 @@ PYBIND11_MODULE(_core, m) {
       "c1",
       [](const Points& points, const Points& values, const std::optional<Points>& gradients,
          const std::string& fit, int degree, const std::string& degree_selection, double smoothing,
-         bool rescale, bool exact) {
-        Fit_settings settings{fit, degree, degree_selection, smoothing, 0};
+         std::optional<double> tension, bool rescale, bool exact) {
+        Fit_settings settings{fit, degree, degree_selection, smoothing, tension, 0};
         return exact ? make_c1<Exact>(points, values, gradients, settings, rescale)
                      : make_c1<Fast>(points, values, gradients, settings, rescale);
       },
       py::arg("points"), py::arg("values"), py::arg("gradients"), py::arg("fit"), py::arg("degree"),
-      py::arg("degree_selection"), py::arg("smoothing"), py::arg("rescale"), py::arg("exact"));
+      py::arg("degree_selection"), py::arg("smoothing"), py::arg("tension"), py::arg("rescale"),
+      py::arg("exact"));
   m.def(
       "mann",
       [](const Points& points, const Points& values, int degree, bool exact) {

@@ -68,6 +68,12 @@ def test_bad_options():
         tspline.C1Interpolator(SQUARE, Z, fit="adaptive", smoothing=1.0)
     with pytest.raises(ValueError, match="smoothing"):
         tspline.C1Interpolator(SQUARE, Z, fit="energy", smoothing=-1.0)
+    with pytest.raises(ValueError, match="the tension must be a finite number"):
+        tspline.C1Interpolator(SQUARE, Z, tension=-1.0)
+    with pytest.raises(ValueError, match="a tension needs the adaptive or the minimal-energy"):
+        tspline.C1Interpolator(SQUARE, Z, fit="local", tension=1.0)
+    with pytest.raises(ValueError, match="does not go with smoothing"):
+        tspline.C1Interpolator(SQUARE, Z, fit="energy", smoothing=1.0, tension=1.0)
     with pytest.raises(ValueError, match="given gradients need an interpolating fit"):
         tspline.C1Interpolator(SQUARE, Z, fit="approximate", gradients=np.zeros((5, 2)))
     with pytest.raises(ValueError, match="non-finite gradient"):

@@ -229,6 +229,10 @@ class C1Interpolator(Interpolator):
         (does not interpolate), as ``tspline c1 --fit``.
     smoothing : float, optional
         The lambda of ``fit="energy"`` (None or 0 interpolates).
+    tension : float, optional
+        The weight of a tension toward the piecewise linear interpolant in the energy of
+        ``fit="adaptive"`` and ``fit="energy"`` (larger: less overshoot, less smooth; 0: the
+        thin plate alone); None: 2 for adaptive, 0 for energy (``tspline c1 --tension``).
     gradients : (n, 2) array_like, optional
         (dz/dx, dz/dy) at every point, interpolated instead of estimated.
     rescale : bool
@@ -266,9 +270,9 @@ class C1Interpolator(Interpolator):
     True
     """
 
-    def __init__(self, points, values, *, fit="adaptive", smoothing=None, gradients=None,
-                 rescale=False, fill_value=_np.nan, outside="nan", exact=False, degree=5,
-                 degree_selection="cv"):
+    def __init__(self, points, values, *, fit="adaptive", smoothing=None, tension=None,
+                 gradients=None, rescale=False, fill_value=_np.nan, outside="nan", exact=False,
+                 degree=5, degree_selection="cv"):
         if fit not in _FITS:
             raise ValueError(f"fit must be one of {', '.join(_FITS)}, not {fit!r}")
         if degree_selection not in ("cv", "largest"):
@@ -279,7 +283,8 @@ class C1Interpolator(Interpolator):
         z = _as_values(values, p.shape[0])
         g = None if gradients is None else _as_points(gradients, "gradients")
         s = 0.0 if smoothing is None else float(smoothing)
-        core = _core.c1(p, z, g, fit, int(degree), degree_selection, s, bool(rescale),
+        t = None if tension is None else float(tension)
+        core = _core.c1(p, z, g, fit, int(degree), degree_selection, s, t, bool(rescale),
                         bool(exact))
         super().__init__(core, fill_value, outside)
 

@@ -53,6 +53,12 @@ int run_c1(const std::vector<std::string>& args) {
   cl.number(job.smoothing, "smoothing", "LAMBDA",
             "with --fit energy: stop interpolating and minimise sum of squared residuals "
             "+ LAMBDA h^2 thin-plate energy (h^2 the area per data point; 0 interpolates)");
+  double tension = 0;
+  cl.number(tension, "tension", "TAU",
+            "with --fit adaptive or energy: add (TAU / h^2) times the integral of |grad s - "
+            "grad g|^2 to the thin-plate energy, g the piecewise linear interpolant of the "
+            "data (larger: closer to g, less overshoot; 0: the thin plate alone); default 2 "
+            "for adaptive (times each vertex's distrust of its polynomial), 0 for energy");
   cl.flag(job.gradients, "gradients",
           "the input has known gradients, 'x y z zx zy' per line: the spline "
           "interpolates them at every vertex");
@@ -79,6 +85,8 @@ int run_c1(const std::vector<std::string>& args) {
             "one value per query point, 'nan' outside the domain ('-': stdout)", {{}, true});
   if (!cl.parse(args))
     return 0;
+  if (cl.given("tension"))
+    job.tension = tension;
   if (job.input.empty())
     throw Usage_error("missing --input FILE (see 'tspline c1 --help'; 'tspline demo' needs none)");
   if (job.query.empty() != job.values.empty())

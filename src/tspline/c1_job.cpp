@@ -169,6 +169,14 @@ Input<K> read_input(const std::string& path, bool rescale, bool gradients,
                           ".off/.obj/.ply/.stl)");
 }
 
+// The tension the fit uses: the one asked for, else the library's default (0 where the fit
+// has no energy).
+double tension_of(const C1_job& job, TS::Fit fit) {
+  if (job.tension)
+    return *job.tension;
+  return fit == TS::Fit::ADAPTIVE ? TS::internal::adaptive_tension : 0.0;
+}
+
 template <class Point_2>
 Json point_json(const Point_2& p) {
   Json a = Json::array();
@@ -231,7 +239,9 @@ Json run(const C1_job& job, std::ostream& out) {
                                              ? TS::Degree_selection::LARGEST
                                              : TS::Degree_selection::CROSS_VALIDATION;
   const auto outputs = TSP::smoothing(
-      job.smoothing, TSP::vertex_gradients(input.gradients, TSP::fit_statistics(fit_statistics)));
+      job.smoothing,
+      TSP::tension(tension_of(job, fit),
+                   TSP::vertex_gradients(input.gradients, TSP::fit_statistics(fit_statistics))));
   // The library chooses the corner frame the fit needs.
   Spline spline = TS::make_c1_quintic_spline(
       std::move(domain), input.values,
@@ -376,6 +386,8 @@ Json run(const C1_job& job, std::ostream& out) {
   report["gradients"] = job.gradients ? "given" : "estimated";
   if (fit == TS::Fit::MINIMAL_ENERGY)
     report["smoothing"] = job.smoothing;
+  if (fit == TS::Fit::MINIMAL_ENERGY || fit == TS::Fit::ADAPTIVE)
+    report["tension"] = tension_of(job, fit);
   if (fit == TS::Fit::LOCAL_POLYNOMIAL || fit == TS::Fit::LEAST_SQUARES ||
       fit == TS::Fit::ADAPTIVE) {
     Json local = Json::object();
@@ -652,6 +664,13 @@ Json run_c1_job(const C1_job& job, std::ostream& out) {
     throw Usage_error("--smoothing must be a finite number >= 0");
   if (job.smoothing > 0 && job.fit != "energy")
     throw Usage_error("--smoothing needs --fit energy");
+  if (job.tension && (!(*job.tension >= 0) || !std::isfinite(*job.tension)))
+    throw Usage_error("--tension must be a finite number >= 0");
+  if (job.tension && job.fit != "adaptive" && job.fit != "energy")
+    throw Usage_error("--tension needs --fit adaptive or --fit energy");
+  if (job.tension && *job.tension > 0 && job.smoothing > 0)
+    throw Usage_error("--tension pulls toward the data's interpolant: it does not go with "
+                      "--smoothing");
   if (job.gradients && job.fit == "approximate")
     throw Usage_error("--gradients needs an interpolating fit (not approximate)");
   if (job.gradients && job.smoothing > 0)

@@ -8,6 +8,7 @@
 #include "cli.h"
 
 #include <ostream>
+#include <optional>
 #include <string>
 
 namespace tspline {
@@ -20,6 +21,7 @@ struct C1_job {
   int degree = 5; // largest degree of the local polynomials (local, lsq)
   std::string degree_selection = "cv"; // cv (cross-validation) | largest
   double smoothing = 0;                // energy fit: lambda of misfit + lambda h^2 energy
+  std::optional<double> tension;       // adaptive and energy fits; unset: the fit's default
   bool gradients = false;              // the input has 'x y z zx zy': interpolate gradients too
   bool rescale = false;                // fit with y scaled by a power of two like x's extent
   std::string fix = "reroute";         // reroute | perturb

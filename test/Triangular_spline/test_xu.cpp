@@ -156,6 +156,17 @@ std::vector<double> errors_at(const C1_quintic_spline<Epick>& spline,
   return errors;
 }
 
+// call() throws Invalid_input with `text` in its message.
+template <class Call>
+bool throws_with(const Call& call, const std::string& text) {
+  try {
+    call();
+  } catch (const TS::Invalid_input& e) {
+    return std::string(e.what()).find(text) != std::string::npos;
+  }
+  return false;
+}
+
 // A jittered grid of the unit square, spacing 1/n, jitter up to h/4, the boundary kept.
 std::vector<Epick::Point_2> jittered_grid(int n, unsigned seed) {
   std::mt19937 engine{seed};
@@ -1461,14 +1472,6 @@ TEST(MakeC1QuinticSpline, ChoosesTheFrameAndPassesEveryParameter) {
     z.push_back(FT(p.x() * p.x() * p.y() - FT(3) * p.y() + FT(1, 7)));
     gradients.push_back({{FT(FT(2) * p.x() * p.y()), FT(p.x() * p.x() - FT(3))}});
   }
-  const auto throws_with = [](const auto& call, const std::string& text) {
-    try {
-      call();
-    } catch (const TS::Invalid_input& e) {
-      return std::string(e.what()).find(text) != std::string::npos;
-    }
-    return false;
-  };
   // default: the adaptive fit of degree up to 5 with interpolated corners
   TS::Fit_statistics statistics;
   const auto made = TS::make_c1_quintic_spline(domain, z, TSP::fit_statistics(statistics));
@@ -1696,6 +1699,44 @@ TEST(Tension, KeepsLinearDataAndFollowsSparseDataCloser) {
   }
   // measured 7.18 against 7.85 (0.914)
   EXPECT_LT(tension_sum, 0.95 * plain_sum) << tension_sum << " against " << plain_sum;
+}
+
+TEST(Tension, IsAParameterOfTheAdaptiveAndEnergyFits) {
+  // Unset is 2 for the adaptive fit and 0 for the energy fit; any other value changes the
+  // sparse fits; 0 is accepted by every fit; bad values and combinations are bad input.
+  namespace TSP = TS::parameters;
+  const auto domain = delaunay_of<Epick>(random_square_points(30, 7));
+  std::vector<double> z;
+  for (const auto& p : domain.points())
+    z.push_back(std::tanh(9 * (p.y() - p.x())));
+  auto values_of = [&](auto np) { return TS::make_c1_quintic_spline(domain, z, np).values(); };
+  const auto adaptive = values_of(TSP::data_fit(Fit::ADAPTIVE));
+  EXPECT_EQ(values_of(TSP::data_fit(Fit::ADAPTIVE, TSP::tension(2))), adaptive);
+  EXPECT_NE(values_of(TSP::data_fit(Fit::ADAPTIVE, TSP::tension(0))), adaptive);
+  const auto energy = values_of(TSP::data_fit(Fit::MINIMAL_ENERGY));
+  EXPECT_EQ(values_of(TSP::data_fit(Fit::MINIMAL_ENERGY, TSP::tension(0))), energy);
+  const auto tense =
+      TS::make_c1_quintic_spline(domain, z, TSP::data_fit(Fit::MINIMAL_ENERGY, TSP::tension(5)));
+  EXPECT_NE(tense.values(), energy);
+  EXPECT_LT(certify(tense).max_residual, 1e-10);
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) // still interpolates
+    EXPECT_EQ(tense.value(static_cast<C1_quintic_spline<Epick>::Slot>(v)), z[v]);
+  // the public fit_vertex_data() takes it too
+  C1_quintic_spline<Epick> by_hand(domain, Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(by_hand, z, Fit::MINIMAL_ENERGY, 3, TS::Degree_selection::CROSS_VALIDATION, 0,
+                      {}, 5.0);
+  EXPECT_EQ(by_hand.values(), tense.values());
+  EXPECT_EQ(values_of(TSP::data_fit(Fit::LOCAL_POLYNOMIAL, TSP::tension(0))),
+            values_of(TSP::data_fit(Fit::LOCAL_POLYNOMIAL)));
+  EXPECT_TRUE(
+      throws_with([&] { values_of(TSP::tension(-1)); }, "the tension must be a finite number"));
+  EXPECT_TRUE(throws_with([&] { values_of(TSP::tension(std::nan(""))); },
+                          "the tension must be a finite number"));
+  EXPECT_TRUE(throws_with([&] { values_of(TSP::data_fit(Fit::LOCAL_POLYNOMIAL, TSP::tension(1))); },
+                          "a tension needs the adaptive or the minimal-energy fit"));
+  EXPECT_TRUE(throws_with(
+      [&] { values_of(TSP::data_fit(Fit::MINIMAL_ENERGY, TSP::smoothing(0.5, TSP::tension(1)))); },
+      "does not go with smoothing"));
 }
 
 TEST(LocalFit, ResolutionIsZeroOnPolynomialsAndNearOneOnNoise) {

@@ -24,6 +24,7 @@ namespace Triangular_spline {
   \ingroup PkgTriangularSplineSplines
   \brief the named parameters of `make_c1_quintic_spline()`: `data_fit(Fit)`,
   `local_degree(int)`, `degree_selection(Degree_selection)`, `smoothing(double)`,
+  `tension(double)`,
   `vertex_gradients(gradients)` and `fit_statistics(statistics)`, each as `f(value)`
   (starts a pack) or `f(value, np)` (appends to `np`), e.g.
   \code
@@ -40,6 +41,7 @@ CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(data_fit, Fit)
 CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(local_degree, int)
 CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(degree_selection, Degree_selection)
 CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(smoothing, double)
+CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(tension, double)
 
 // The gradients are large: the pack keeps a reference, as CGAL's own maps are kept.
 template <class Value>
@@ -120,6 +122,13 @@ fit_statistics(Fit_statistics& statistics, const Named_function_parameters<T, Ta
       \cgalParamType{`double`}
       \cgalParamDefault{`0`}
     \cgalParamNEnd
+    \cgalParamNBegin{tension}
+      \cgalParamDescription{the weight \f$\tau\f$ of the tension toward the piecewise linear
+      interpolant in the energy of `Fit::ADAPTIVE` and `Fit::MINIMAL_ENERGY`
+      (`fit_vertex_data()`)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{2 for `Fit::ADAPTIVE`, 0 for `Fit::MINIMAL_ENERGY`}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_gradients}
       \cgalParamDescription{a gradient per vertex to interpolate instead of estimated ones}
       \cgalParamType{`std::vector<std::array<Value, 2>>`}
@@ -148,6 +157,11 @@ make_c1_quintic_spline(Planar_domain<GeomTraits> domain, const std::vector<Value
   const Degree_selection selection = choose_parameter(
       get_parameter(np, internal_np::degree_selection), Degree_selection::CROSS_VALIDATION);
   const double lambda = choose_parameter(get_parameter(np, internal_np::smoothing), 0.0);
+  const auto given_tension = get_parameter(np, internal_np::tension);
+  std::optional<double> tension;
+  if constexpr (!std::is_same_v<std::decay_t<decltype(given_tension)>,
+                                CGAL::internal_np::Param_not_found>)
+    tension = given_tension;
 
   C1_quintic_spline<GeomTraits, Value> spline(
       std::move(domain),
@@ -155,7 +169,8 @@ make_c1_quintic_spline(Planar_domain<GeomTraits> domain, const std::vector<Value
   const auto gradients = get_parameter(np, internal_np::vertex_gradients);
   const auto statistics = get_parameter(np, internal_np::fit_statistics);
   const auto run = [&](const std::vector<std::array<Value, 2>>& given) {
-    const Fit_statistics s = fit_vertex_data(spline, values, fit, degree, selection, lambda, given);
+    const Fit_statistics s =
+        fit_vertex_data(spline, values, fit, degree, selection, lambda, given, tension);
     if constexpr (!std::is_same_v<std::decay_t<decltype(statistics)>,
                                   CGAL::internal_np::Param_not_found>)
       statistics.get() = s;

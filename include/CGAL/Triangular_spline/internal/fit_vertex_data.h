@@ -56,11 +56,12 @@ constexpr double adaptive_tension = 2;
 
 // fit_vertex_data() with the solver's options, and what the solver did (tests, benchmarks).
 template <class GeomTraits, class Value>
-Fit_statistics
-fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<Value>& values,
-                Fit fit, int local_degree, Degree_selection selection, double smoothing,
-                const std::vector<std::array<Value, 2>>& given_gradients,
-                const Schwarz_options& options, Schwarz_statistics* solver = nullptr) {
+Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
+                               const std::vector<Value>& values, Fit fit, int local_degree,
+                               Degree_selection selection, double smoothing,
+                               const std::vector<std::array<Value, 2>>& given_gradients,
+                               const Schwarz_options& options, Schwarz_statistics* solver = nullptr,
+                               std::optional<double> tension = std::nullopt) {
   using FT = typename GeomTraits::FT;
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   const auto& domain = spline.domain();
@@ -164,6 +165,20 @@ fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<
     throw Invalid_input("fit: the smoothing must be a finite number >= 0");
   if (smoothing > 0 && fit != Fit::MINIMAL_ENERGY)
     throw Invalid_input("fit: smoothing needs the minimal-energy fit");
+  if (tension) {
+    if (!(*tension >= 0) || !std::isfinite(*tension))
+      throw Invalid_input("fit: the tension must be a finite number >= 0");
+    if (*tension > 0 && fit != Fit::ADAPTIVE && fit != Fit::MINIMAL_ENERGY)
+      throw Invalid_input("fit: a tension needs the adaptive or the minimal-energy fit");
+    if (smoothing > 0 && *tension > 0)
+      throw Invalid_input("fit: a tension pulls toward the interpolant of the data; it does "
+                          "not go with smoothing");
+  }
+  // The tension's weight: adaptive_tension by default in the adaptive fit (times each
+  // vertex's distrust), none in the minimal-energy fit (Xu's thin plate).
+  const double tension_weight = tension                ? *tension
+                                : fit == Fit::ADAPTIVE ? internal::adaptive_tension
+                                                       : 0.0;
   // Adaptive fit: trust in each vertex's polynomial, from how well it resolves the data.
   std::vector<double> trust;
   bool blend_energy = false;
@@ -183,8 +198,11 @@ fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<
   internal::Schwarz_statistics solved;
   if (fit == Fit::MINIMAL_ENERGY) {
     solved = internal::minimal_energy_free_values(
-        spline, values, smoothing, {}, given_star,
-        [&](Slot s) { return local ? target(s) : Value_traits<Value>::zero(); }, options);
+        spline, values, smoothing,
+        tension_weight > 0 ? std::vector<double>(domain.number_of_vertices(), tension_weight)
+                           : std::vector<double>{},
+        given_star, [&](Slot s) { return local ? target(s) : Value_traits<Value>::zero(); },
+        options);
   } else if (blend_energy) {
     auto nearest = [&](Slot s) {
       const auto label = spline.polar_label(s);
@@ -237,11 +255,12 @@ fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline, const std::vector<
       else if (outside_solve(s))
         spline.set_free_value(s, target(s));
     });
-    std::vector<double> tension(domain.number_of_vertices());
-    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
-      tension[v] = internal::adaptive_tension * (1 - trust[v]);
+    std::vector<double> distrust_tension;
+    if (tension_weight > 0)
+      for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+        distrust_tension.push_back(tension_weight * (1 - trust[v]));
     solved = internal::minimal_energy_free_values(
-        spline, values, 0, tension,
+        spline, values, 0, distrust_tension,
         [&](Slot s, Value& fixed) {
           if (given_star(s, fixed))
             return true;

@@ -31,6 +31,7 @@ enum data_fit_t { data_fit };
 enum local_degree_t { local_degree };
 enum degree_selection_t { degree_selection };
 enum smoothing_t { smoothing };
+enum tension_t { tension };
 enum vertex_gradients_t { vertex_gradients };
 enum fit_statistics_t { fit_statistics };
 
