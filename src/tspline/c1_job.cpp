@@ -190,6 +190,7 @@ Json run(const C1_job& job, std::ostream& out) {
   using Spline = TS::C1_quintic_spline<K>;
   Stopwatch clock, total;
   Json timings = Json::object();
+  Json memory = Json::object(); // peak resident memory after each stage
   Json report = Json::object();
 
   // Reading and triangulating take about a second from some 10^5 points (a few MB of text).
@@ -200,6 +201,7 @@ Json run(const C1_job& job, std::ostream& out) {
   progress("c1", "reading and triangulating " + job.input, large_file);
   Input<K> input = read_input<K>(job.input, job.rescale, job.gradients, job.columns);
   timings["read_and_triangulate"] = clock.lap();
+  memory["read_and_triangulate"] = peak_memory_mb();
   // About a second of work from here on: 10^5 triangles exact, 10^6 in double.
   const bool large = input.domain.number_of_faces() > (job.exact ? 20000u : 300000u);
   // Exact arithmetic runs at several thousand triangles per second (issue 12): say what to
@@ -221,6 +223,7 @@ Json run(const C1_job& job, std::ostream& out) {
                                    ? TS::find_degenerate_frames(input.domain)
                                    : TS::Degenerate_frame_analysis<std::uint32_t>();
   timings["degenerate_frame_fix"] = clock.lap();
+  memory["degenerate_frame_fix"] = peak_memory_mb();
 
   const TS::Fit fit = job.fit == "interpolate" ? TS::Fit::INTERPOLATE
                       : job.fit == "tangent"   ? TS::Fit::TANGENT_PLANES
@@ -250,6 +253,7 @@ Json run(const C1_job& job, std::ostream& out) {
   if (input.y_exponent != 0)
     spline.map_domain(scaled_y(spline.domain(), -input.y_exponent));
   timings["fit_and_propagate"] = clock.lap();
+  memory["fit_and_propagate"] = peak_memory_mb();
 
   const auto& d = spline.domain();
   // Double builds: residuals are round-off, accepted up to 1e-10 of the largest control
@@ -264,6 +268,7 @@ Json run(const C1_job& job, std::ostream& out) {
   const TS::Continuity_certificate certificate = TS::certify_continuity(
       spline, 1, TS::parameters::residual_tolerance(job.exact ? 0 : 1e-10 * scale));
   timings["certify"] = clock.lap();
+  memory["certify"] = peak_memory_mb();
 
   std::optional<long long> morgan_scott = TS::morgan_scott_dimension(d);
   // The dimension from the rank of the C^1 conditions modulo a prime: an upper bound, which
@@ -274,6 +279,7 @@ Json run(const C1_job& job, std::ostream& out) {
     progress("c1", "computing the rank of the C^1 conditions", large);
     dimension_bound = TS::spline_dimension_upper_bound(d);
     timings["dimension"] = clock.lap();
+    memory["dimension"] = peak_memory_mb();
   }
   const bool dimension_proven =
       dimension_bound && dimension_bound->upper_bound == spline.number_of_free_parameters();
@@ -371,6 +377,7 @@ Json run(const C1_job& job, std::ostream& out) {
         "the propagation amplifies inconsistent prescribed points " + format_number(amplification) +
         " times: control points multiply the data's errors by that much" + scale_hint);
   timings["range_checks"] = clock.lap();
+  memory["range_checks"] = peak_memory_mb();
 
   std::size_t numerical_frames = 0;
   for (const auto& f : spline.degenerate_frames())
@@ -482,12 +489,14 @@ Json run(const C1_job& job, std::ostream& out) {
     progress("c1", "tessellating and writing " + job.mesh, large || job.levels >= 5);
     report["mesh"] = write_tessellated_mesh(spline, job.levels, job.mesh);
     timings["tessellate_and_write"] = clock.lap();
+    memory["tessellate_and_write"] = peak_memory_mb();
   }
   if (!job.save.empty()) {
     std::ofstream file = open_output(job.save);
     TS::write_spline_file(file, spline);
     report["saved"] = job.save;
     timings["save"] = clock.lap();
+    memory["save"] = peak_memory_mb();
   }
   if (!job.query.empty()) {
     if (job.values.empty())
@@ -516,9 +525,13 @@ Json run(const C1_job& job, std::ostream& out) {
     q["values"] = job.values;
     report["query"] = q;
     timings["query"] = clock.lap();
+    memory["query"] = peak_memory_mb();
   }
   timings["total"] = total.lap();
+  memory["total"] = peak_memory_mb();
   report["timings_seconds"] = timings;
+  if (memory["total"].get<double>() >= 0)
+    report["peak_memory_mb_after"] = memory;
 
   if (!job.quiet) {
     out << "C^1 quintic spline (Xu) over " << input.kind << "\n"

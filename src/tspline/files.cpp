@@ -9,6 +9,15 @@
 
 namespace tspline {
 
+double peak_memory_mb() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0)
+      return std::stod(line.substr(6)) / 1024; // "VmHWM:   123456 kB"
+  return -1;
+}
+
 double Stopwatch::lap() {
   const auto now = std::chrono::steady_clock::now();
   const double s = std::chrono::duration<double>(now - m_last).count();

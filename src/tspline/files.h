@@ -19,6 +19,10 @@ private:
   std::chrono::steady_clock::time_point m_last = std::chrono::steady_clock::now();
 };
 
+// The process's peak resident memory so far in MB (VmHWM of /proc/self/status); -1 where
+// the system does not say (not Linux).
+double peak_memory_mb();
+
 // The extension of the file name (after the last dot of the last path component),
 // lowercase; empty if there is none.
 std::string lowercase_extension(const std::string& path);
