@@ -591,6 +591,10 @@ std::shared_ptr<Spline> make_c1(const Points& points, const Points& values,
                             std::to_string(n) + " points");
   const TS::Fit fit = parse_fit(asked.fit);
   Fit_settings settings = asked;
+  // the tension the fit uses: the one asked for, else the library's default
+  const double tension = asked.tension              ? *asked.tension
+                         : fit == TS::Fit::ADAPTIVE ? TS::internal::adaptive_tension
+                                                    : 0.0;
   std::shared_ptr<Network> spline;
   std::shared_ptr<std::vector<std::size_t>> order;
   TS::Fit_statistics statistics;
@@ -615,13 +619,10 @@ std::shared_ptr<Spline> make_c1(const Points& points, const Points& values,
                      settings.degree,
                      TSP::degree_selection(
                          selection,
-                         TSP::smoothing(settings.smoothing,
-                                        TSP::tension(settings.tension ? *settings.tension
-                                                     : fit == TS::Fit::ADAPTIVE
-                                                         ? TS::internal::adaptive_tension
-                                                         : 0.0,
-                                                     TSP::vertex_gradients(
-                                                         g, TSP::fit_statistics(statistics)))))))));
+                         TSP::smoothing(
+                             settings.smoothing,
+                             TSP::tension(tension, TSP::vertex_gradients(
+                                                       g, TSP::fit_statistics(statistics)))))))));
     // Fitted in rescaled coordinates: back onto the data's own points (exact).
     if (settings.y_exponent != 0)
       spline->map_domain(scaled_y(spline->domain(), -settings.y_exponent));
@@ -634,6 +635,8 @@ std::shared_ptr<Spline> make_c1(const Points& points, const Points& values,
     info["vertices_minimal_energy"] = statistics.vertices_by_trust[2];
     info["energy_skipped"] = statistics.energy_skipped;
   }
+  if (fit == TS::Fit::ADAPTIVE || fit == TS::Fit::MINIMAL_ENERGY)
+    info["tension"] = tension;
   std::shared_ptr<const Network> network = spline;
   auto locator = Spline_impl<K, Network>::make_locator(network);
   return std::make_shared<Spline_impl<K, Network>>(network, locator, order, "c1", settings, info);

@@ -151,6 +151,25 @@ def test_with_values_reuses_the_triangulation(scattered):
         f.with_values(z[:10])
 
 
+def test_tension():
+    # 30 points of a cliff: the adaptive fit's tension (default 2) is reported and used;
+    # tension=0 is the thin plate alone; energy's default is 0; with_values keeps it.
+    p = np.random.default_rng(7).random((30, 2))
+    z = np.tanh(9 * (p[:, 1] - p[:, 0]))
+    q = np.random.default_rng(8).random((200, 2)) * 0.8 + 0.1
+    default = tspline.C1Interpolator(p, z)
+    assert default.info["tension"] == 2.0
+    assert np.array_equal(tspline.C1Interpolator(p, z, tension=2)(q), default(q), equal_nan=True)
+    plain = tspline.C1Interpolator(p, z, tension=0)
+    assert plain.info["tension"] == 0.0
+    assert not np.allclose(plain(q), default(q), equal_nan=True)
+    assert tspline.C1Interpolator(p, z, fit="energy").info["tension"] == 0.0
+    tense = tspline.C1Interpolator(p, z, fit="energy", tension=5)
+    np.testing.assert_allclose(tense(p), z, rtol=0, atol=1e-13)  # still interpolates
+    again = plain.with_values(z)
+    assert np.array_equal(again(q), plain(q), equal_nan=True)
+
+
 def test_certify_exact_is_a_proof(dyadic):
     p, z = dyadic
     c = tspline.C1Interpolator(p, z, exact=True).certify()
