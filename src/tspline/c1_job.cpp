@@ -456,7 +456,7 @@ Json run(const C1_job& job, std::ostream& out) {
     for (const auto& rule : spline.rules()) {
       const std::size_t kind = std::size_t(spline.kind(rule.target));
       double largest = 0;
-      for (int i = 0; i < rule.size; ++i)
+      for (int i = 0; i < rule.size(); ++i)
         largest = (std::max)(largest, std::abs(CGAL::to_double(rule.weights[std::size_t(i)])));
       by_kind[kind] = (std::max)(by_kind[kind], largest);
       above_bound[kind] += largest > Spline::propagation_weight_bound ? 1 : 0;

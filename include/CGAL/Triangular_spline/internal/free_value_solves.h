@@ -79,7 +79,7 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
     merged.clear();
     std::array<double, D> k;
     k.fill(0);
-    for (int i = 0; i < rule.size; ++i) {
+    for (int i = 0; i < rule.size(); ++i) {
       const double w = CGAL::to_double(rule.weights[std::size_t(i)]);
       const Slot src = rule.sources[std::size_t(i)];
       for (const auto& [j, c] : a.rows[src])
