@@ -514,9 +514,9 @@ Json run(const C1_job& job, std::ostream& out) {
         file << "nan\n";
         ++outside;
       } else {
-        char buffer[32];
-        std::snprintf(buffer, sizeof buffer, "%.17g", v);
-        file << buffer << '\n';
+        std::string text;
+        TS::internal::append_double(text, v);
+        file << text << '\n';
       }
     }
     Json q = Json::object();

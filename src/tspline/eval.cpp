@@ -92,7 +92,7 @@ int run_eval(const std::vector<std::string>& args) {
       "Evaluates a saved functional spline (a 'tspline-spline 1' file of dimension 1, as written "
       "by 'tspline c1 --output', 'tspline mann --output' and 'tspline adjust --output') and its "
       "derivatives at query points or on a regular grid. Output: CSV with the header "
-      "'x,y,z[,zx,zy[,zxx,zxy,zyy]]' (numbers as %.17g, 'nan' where there is no value), or, "
+      "'x,y,z[,zx,zy[,zxx,zxy,zyy]]' (numbers as the shortest decimals that read back to the same doubles, 'nan' where there is no value), or, "
       "with --grid and an output ending in .asc, an ESRI ASCII grid of the values (square "
       "cells, rows from north to south, NODATA_value -9999; the cells are centred on the grid "
       "nodes), or, with --grid and an output ending in .tif, a GeoTIFF (where tspline was built "

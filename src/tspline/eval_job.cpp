@@ -69,9 +69,7 @@ double nearest_double(const FT& x) {
 }
 
 void append_number(std::string& text, double x) {
-  char buffer[32];
-  const int size = std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  text.append(buffer, static_cast<std::size_t>(size));
+  TS::internal::append_double(text, x);
 }
 
 struct Counts {

@@ -212,7 +212,11 @@ TEST(NumberParsing, FormatRoundTrips) {
   EXPECT_EQ(TS::format_number<Exact_FT>(Exact_FT(-10) / Exact_FT(4)), "-5/2");
   EXPECT_EQ(TS::format_number(Exact_FT(7)), "7");
   EXPECT_EQ(TS::format_number(Exact_FT(0)), "0");
-  EXPECT_EQ(TS::format_number(0.1), "0.10000000000000001");
+  // the shortest decimals that read back to the same double
+  EXPECT_EQ(TS::format_number(0.1), "0.1");
+  EXPECT_EQ(TS::format_number(1.0 / 3.0), "0.3333333333333333");
+  EXPECT_EQ(TS::format_number(-2.5e-300), "-2.5e-300");
+  EXPECT_EQ(TS::format_number(std::nextafter(1.0, 2.0)), "1.0000000000000002");
   Random_rationals random(7);
   for (int i = 0; i < 200; ++i) {
     const Exact_FT q = random.rational<Exact_FT>(1000000, 999983);
@@ -783,6 +787,46 @@ TYPED_TEST(SplineFile, WriterChecksPatches) {
   mixed[7] = mixed[7].elevate_degree();
   EXPECT_TRUE(throws_with([&] { TS::write_spline_file(out, Network(domain, mixed)); },
                           {"patch 7 has degree 3"}));
+}
+
+// The writer formats the patches on all cores, 64 blocks of 1024 faces at a time: a network
+// of more than one batch must give the text of a plain serial loop, and the first bad face's
+// error wherever the bad faces sit.
+TEST(SplineFile, ParallelWriterGivesTheSerialText) {
+  using K = Epick;
+  TS::Scattered_data<K> data;
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int i = 0; i < 36000; ++i) {
+    data.points.emplace_back(unit(random), unit(random));
+    data.values.push_back(0);
+  }
+  const TS::Planar_domain<K> domain = TS::delaunay_domain(data).first;
+  ASSERT_GT(domain.number_of_faces(), 65536u); // two batches
+  auto patches = random_patches<K, double>(domain, 5, 3);
+  std::ostringstream out;
+  TS::write_spline_file(out, TS::Patch_network<K>(domain, patches));
+  // The serial text: the same header, vertex and face lines, then the patches.
+  const std::string text = out.str();
+  const std::size_t start = text.find("patches\n");
+  ASSERT_NE(start, std::string::npos);
+  std::string serial = text.substr(0, start) + "patches\n";
+  for (const auto& patch : patches) {
+    for (std::size_t i = 0; i < patch.control_points().size(); ++i)
+      serial += (i ? " " : "") + TS::format_number(patch.control_points()[i]);
+    serial += "\n";
+  }
+  serial += "end\n";
+  EXPECT_TRUE(text == serial);
+  std::istringstream in(text);
+  expect_same_spline(domain, patches, TS::read_spline_file<K>(in, "large.spline"));
+  // bad faces in both batches, the later one first in the thread order
+  std::swap(patches[70001], patches[70002]);
+  std::swap(patches[40000], patches[40003]);
+  std::ostringstream bad;
+  EXPECT_TRUE(
+      throws_with([&] { TS::write_spline_file(bad, TS::Patch_network<K>(domain, patches)); },
+                  {"patch 40000 vertex", "is not a vertex of face 40000"}));
 }
 
 TEST(SplineFileConversion, NumberTypesConvertAsDocumented) {

@@ -63,8 +63,8 @@ FT parse_number(const std::string& token) {
   \brief formats `x` as a token that `parse_number<FT>()` reads back to the same value.
 
   An exact `FT` is written as the reduced fraction `p/q`, or `p` when it is an integer; an
-  inexact one is converted to `double` and written with `%.17g`, which round-trips every
-  `double` exactly.
+  inexact one is converted to `double` and written as the shortest decimal that reads back to
+  the same `double` (`std::to_chars`).
   \tparam FT `double`, or an exact number type with a `CGAL::Fraction_traits`
   decomposition (e.g. `CGAL::Exact_rational`)
   \param x the number to format
@@ -86,9 +86,9 @@ std::string format_number(const FT& x) {
       out << "/" << denominator;
     return out.str();
   } else {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.17g", CGAL::to_double(x));
-    return buffer;
+    std::string text;
+    internal::append_double(text, CGAL::to_double(x));
+    return text;
   }
 }
 

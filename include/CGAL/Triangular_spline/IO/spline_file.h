@@ -6,6 +6,7 @@
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
+#include <CGAL/Triangular_spline/internal/parallel.h>
 #include <CGAL/Triangular_spline/internal/text.h>
 #include <CGAL/Triangular_spline/internal/spline_file_format.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -83,9 +85,9 @@ struct Spline_file : Patch_network<GeomTraits, Value> {
 
   With `number_type exact` every number is an integer `p`, a fraction `p/q` or an exact
   decimal (`0.1` means 1/10); with `number_type double` every number is a decimal, and
-  `%.17g` (which this writer uses) round-trips every `double`. Numbers are written by
-  `format_number()`: reduced fractions for an exact `FT` (nothing is lost), `%.17g` for
-  `double`.
+  the shortest decimal that reads back to a `double` (which this writer uses) round-trips it.
+  Numbers are written by `format_number()`: reduced fractions for an exact `FT` (nothing is
+  lost), the shortest round-tripping decimal for `double`.
 
   \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork` whose `FT` is `double`
   or exact and whose values are `FT` (dimension 1) or `Vector_3` (dimension 3)
@@ -108,9 +110,11 @@ void write_spline_file(std::ostream& output, const TriangularSplineNetwork& netw
   const Planar_domain<GeomTraits>& domain = network.domain();
   const std::size_t F = domain.number_of_faces();
   const int m = F == 0 ? 0 : network.patch(0).degree();
-  // The patch's vertex order, as domain vertex indices (exact point comparison).
+  constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
+  // The patch's vertex order, as domain vertex indices (exact point comparison), checked on
+  // all cores for double networks (the error of the first bad face, as a serial loop).
   std::vector<std::array<Index, 3>> ordered(F);
-  for (std::size_t f = 0; f < F; ++f) {
+  internal::parallel_for_index(F, exact ? 1 : internal::thread_count(F, 20000), [&](std::size_t f) {
     // binds to a stored patch, or extends the life of a computed one
     const Patch& patch = network.patch(static_cast<Index>(f));
     if (patch.degree() != m)
@@ -132,9 +136,8 @@ void write_spline_file(std::ostream& output, const TriangularSplineNetwork& netw
       used[static_cast<std::size_t>(match)] = true;
       ordered[f][static_cast<std::size_t>(i)] = face[static_cast<std::size_t>(match)];
     }
-  }
+  });
 
-  const bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
   output << internal::spline_file_magic << " " << internal::spline_file_version << "\n"
          << "# a piecewise polynomial over a planar triangulation, written by "
             "CGAL::Triangular_spline\n"
@@ -142,24 +145,73 @@ void write_spline_file(std::ostream& output, const TriangularSplineNetwork& netw
          << "dimension " << Traits::dimension << "\n"
          << "number_type " << (exact ? "exact" : "double") << "\n"
          << "vertices " << domain.number_of_vertices() << "\n";
-  for (const auto& p : domain.points())
-    output << format_number(p.x()) << " " << format_number(p.y()) << "\n";
-  output << "faces " << F << "\n";
-  for (const auto& t : ordered)
-    output << t[0] << " " << t[1] << " " << t[2] << "\n";
-  output << "patches\n";
-  for (std::size_t f = 0; f < F; ++f) {
-    const Patch& patch = network.patch(static_cast<Index>(f));
-    bool first = true;
-    for (const Value& v : patch.control_points())
-      for (int c = 0; c < Traits::dimension; ++c) {
-        if (!first)
-          output << " ";
-        first = false;
-        output << format_number<FT>(Traits::coordinate(v, c));
-      }
-    output << "\n";
+  // Text is built in a buffer written a megabyte at a time: stream insertion of 2·10^7
+  // numbers cost more than formatting them.
+  std::string text;
+  text.reserve(std::size_t(1) << 21);
+  auto append = [](std::string& out, const FT& x) {
+    if constexpr (exact)
+      out += format_number(x);
+    else
+      internal::append_double(out, CGAL::to_double(x));
+  };
+  auto index = [&text](Index i) {
+    char buffer[24];
+    text.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, i).ptr);
+  };
+  auto flush = [&](bool always) {
+    if (always || text.size() >= (std::size_t(1) << 20)) {
+      output.write(text.data(), static_cast<std::streamsize>(text.size()));
+      text.clear();
+    }
+  };
+  for (const auto& p : domain.points()) {
+    append(text, p.x());
+    text += ' ';
+    append(text, p.y());
+    text += '\n';
+    flush(false);
   }
+  text += "faces " + std::to_string(F) + "\n";
+  for (const auto& t : ordered) {
+    index(t[0]);
+    text += ' ';
+    index(t[1]);
+    text += ' ';
+    index(t[2]);
+    text += '\n';
+    flush(false);
+  }
+  text += "patches\n";
+  flush(true);
+  // The patches, most of the file, are formatted on all cores (double only: exact networks
+  // are small), a batch of faces at a time, each block of faces into its own buffer, and
+  // written in face order: the file does not depend on the number of threads.
+  constexpr std::size_t block = internal::parallel_block;
+  const std::size_t batch = 64 * block;
+  std::vector<std::string> pieces(batch / block);
+  for (std::size_t first = 0; first < F; first += batch) {
+    const std::size_t count = (std::min)(batch, F - first);
+    for (std::string& piece : pieces)
+      piece.clear();
+    internal::parallel_for_index(
+        count, exact ? 1 : internal::thread_count(count, 4 * block), [&](std::size_t i) {
+          std::string& piece = pieces[i / block];
+          const Patch& patch = network.patch(static_cast<Index>(first + i));
+          bool first_number = true;
+          for (const Value& v : patch.control_points())
+            for (int c = 0; c < Traits::dimension; ++c) {
+              if (!first_number)
+                piece += ' ';
+              first_number = false;
+              append(piece, Traits::coordinate(v, c));
+            }
+          piece += '\n';
+        });
+    for (const std::string& piece : pieces)
+      output.write(piece.data(), static_cast<std::streamsize>(piece.size()));
+  }
+  flush(true);
   output << "end\n";
   if (!output)
     throw std::runtime_error("write_spline_file: the output stream failed");

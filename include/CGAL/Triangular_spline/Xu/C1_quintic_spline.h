@@ -449,9 +449,12 @@ public:
   /// \param f the index of a face
   /// \returns the quintic patch of face `f` over (`face(f)[0]`, `face(f)[1]`, `face(f)[2]`)
   Patch patch(Index f) const {
+    // the quintic multi-indices once: every certificate, range check and save asks for
+    // every patch, and building the list each time was a third of the call
+    static const std::vector<Multi_index> indices = multi_indices(5);
     std::vector<Value> net;
     net.reserve(21);
-    for (const Multi_index& index : multi_indices(5))
+    for (const Multi_index& index : indices)
       net.push_back(m_values[slot(f, index)]);
     const auto& t = m_domain.face(f);
     return Patch(5, m_domain.point(t[0]), m_domain.point(t[1]), m_domain.point(t[2]),

@@ -24,8 +24,12 @@ inline std::size_t thread_count(std::size_t n, std::size_t grain) {
   return (std::min)(cores, n / (std::max<std::size_t>)(grain, 1) + 1);
 }
 
-// Calls f(i) for every i in [0, n), in interleaved blocks of 1024 over `threads` threads
-// (1: the calling thread only). An exception thrown by f is rethrown after every thread has
+// The indices of one block of parallel_for_index() run on one thread, in increasing order:
+// a caller may append the results of a block's indices to that block's own buffer.
+constexpr std::size_t parallel_block = 1024;
+
+// Calls f(i) for every i in [0, n), in interleaved blocks of `parallel_block` over `threads`
+// threads (1: the calling thread only). An exception thrown by f is rethrown after every thread has
 // stopped: the one of the smallest index, as a serial loop would have thrown it.
 template <class F>
 void parallel_for_index(std::size_t n, std::size_t threads, const F& f) {
@@ -35,7 +39,7 @@ void parallel_for_index(std::size_t n, std::size_t threads, const F& f) {
       f(i);
     return;
   }
-  constexpr std::size_t block = 1024;
+  constexpr std::size_t block = parallel_block;
   std::vector<std::exception_ptr> error(threads);
   std::vector<std::size_t> error_at(threads, n);
   auto run = [&](std::size_t t) {

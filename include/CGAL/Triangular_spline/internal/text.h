@@ -6,6 +6,8 @@
 
 #include <CGAL/number_utils.h>
 
+#include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <sstream>
 #include <string>
@@ -50,6 +52,20 @@ inline std::string quoted(const std::string& token) {
     return "\"" + token + "\"";
   return "\"" + token.substr(0, max_quoted_length) + "...\" (" + std::to_string(token.size()) +
          " characters)";
+}
+
+// Appends the shortest decimal that reads back to `x` (std::to_chars), "nan" for a NaN.
+// It is the writers' hot path: %.17g took 12.7 of the 33 s that `tspline c1` spent on 10^6
+// points, most of it in saving the spline; this is about ten times faster and the numbers
+// are shorter.
+inline void append_double(std::string& text, double x) {
+  if (std::isnan(x)) {
+    text += "nan";
+    return;
+  }
+  char buffer[32];
+  const std::to_chars_result result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  text.append(buffer, result.ptr);
 }
 
 // A point for error messages, in double with 17 digits.
