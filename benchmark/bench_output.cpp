@@ -4,6 +4,7 @@
 // rates of point location and of evaluation at query points.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/Triangular_spline/Domain/Domain_locator.h>
 #include <CGAL/Triangular_spline/Patch_network.h>
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
@@ -115,15 +116,32 @@ void BM_locator_query(benchmark::State& state) {
 }
 BENCHMARK(BM_locator_query);
 
+// Arg 0: random query order; 1: the same queries Hilbert-sorted (spatially ordered, as
+// grids and sorted lidar points are). Real time: the queries run on all cores.
 void BM_evaluate_functional(benchmark::State& state) {
   const TS::Domain_locator<K> locator(network().domain());
-  const std::vector<K::Point_2> points = queries(1 << 16);
+  std::vector<K::Point_2> points = queries(1 << 18);
+  if (state.range(0) == 1)
+    CGAL::hilbert_sort(points.begin(), points.end());
   for (auto _ : state)
     benchmark::DoNotOptimize(TS::evaluate_functional(network(), locator, points));
   state.counters["queries/s"] = benchmark::Counter(
       double(points.size()) * double(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_evaluate_functional)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_evaluate_functional)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same with value, gradient and Hessian (evaluate_jets, order 2).
+void BM_evaluate_jets(benchmark::State& state) {
+  const TS::Domain_locator<K> locator(network().domain());
+  std::vector<K::Point_2> points = queries(1 << 18);
+  if (state.range(0) == 1)
+    CGAL::hilbert_sort(points.begin(), points.end());
+  for (auto _ : state)
+    benchmark::DoNotOptimize(TS::evaluate_jets(network(), locator, points));
+  state.counters["queries/s"] = benchmark::Counter(
+      double(points.size()) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_evaluate_jets)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
 

@@ -19,6 +19,7 @@
 #include <CGAL/Triangular_spline/IO/mesh_io.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -662,6 +663,51 @@ TEST(Jets, C1SplineFittedToACubicHasTheCubicsDerivativesExactly) {
     ASSERT_TRUE(jets[q].has_value());
     EXPECT_TRUE(same_jet(*jets[q], polynomial_jet(cubic, queries[q]), true, 1)) << queries[q];
   }
+}
+
+// Many queries run on all cores (double): every result must be bit for bit the one of a
+// single query (always on the calling thread), inside, outside and extrapolated.
+TEST(Jets, ManyQueriesOnAllCoresMatchOneAtATime) {
+  using K = Epick;
+  Delaunay<K> dt;
+  const Planar_domain<K> domain = delaunay_domain<K>(dt, 53, 300);
+  std::vector<double> values;
+  for (const auto& p : domain.points())
+    values.push_back(std::sin(3 * p.x()) * std::cos(2 * p.y()));
+  TS::C1_quintic_spline<K> spline(domain, TS::Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(spline, values, TS::Fit::LOCAL_POLYNOMIAL, 5);
+  const Domain_locator<K> locator(spline.domain());
+  // random points over a box a little larger than the hull, so some fall outside
+  std::mt19937_64 engine(7);
+  std::vector<double> xs, ys;
+  for (const auto& p : domain.points()) {
+    xs.push_back(p.x());
+    ys.push_back(p.y());
+  }
+  const auto [xmin, xmax] = std::minmax_element(xs.begin(), xs.end());
+  const auto [ymin, ymax] = std::minmax_element(ys.begin(), ys.end());
+  std::uniform_real_distribution<double> x(*xmin - 0.1, *xmax + 0.1), y(*ymin - 0.1, *ymax + 0.1);
+  std::vector<K::Point_2> queries;
+  for (int i = 0; i < 50000; ++i)
+    queries.emplace_back(x(engine), y(engine));
+  const auto jets = TS::evaluate_jets(spline, locator, queries, TS::Outside::LINEAR);
+  const std::vector<double> heights = TS::evaluate_functional(spline, locator, queries);
+  std::size_t outside = 0;
+  for (std::size_t q = 0; q < queries.size(); q += 7) {
+    const auto one = TS::evaluate_jet(spline, locator, queries[q], TS::Outside::LINEAR);
+    ASSERT_TRUE(jets[q].has_value() && one.has_value());
+    EXPECT_TRUE(jets[q]->value == one->value && jets[q]->gradient == one->gradient &&
+                jets[q]->hessian == one->hessian)
+        << queries[q];
+    const auto value = TS::evaluate_at(spline, locator, queries[q]);
+    if (value)
+      EXPECT_EQ(heights[q], *value);
+    else {
+      EXPECT_TRUE(std::isnan(heights[q]));
+      ++outside;
+    }
+  }
+  EXPECT_GT(outside, 100u);
 }
 
 TYPED_TEST(Output, QueriesOnHullEdgesUpToRoundingGetAValue) {

@@ -35,6 +35,12 @@ namespace Triangular_spline {
   order). Points on an edge or at a vertex are evaluated in one incident patch: for a
   continuous spline every incident patch gives the same value.
 
+  With an inexact number type the queries are shared among all cores from 20000 queries on
+  (`network.patch()` is then called concurrently, as `certify_continuity()` does); each
+  result is computed as on one thread. Queries in spatial order (e.g. along a grid, or
+  sorted with `CGAL::hilbert_sort()`) run several times faster than random ones: the
+  patches and the locator's buckets they read stay in the cache.
+
   \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork` with scalar values
   \param network the spline
   \param locator a locator built on `network.domain()` (or an identical domain)
@@ -139,7 +145,8 @@ enum class Outside {
   the Hessian may (it is one-sided there). Queries outside are handled by `outside`.
 
   Every result is computed in `FT`: exact with `CGAL::Exact_rational`, rounded with
-  `double` (use `CGAL::to_double()` on the members to print them).
+  `double` (use `CGAL::to_double()` on the members to print them). Inexact number types
+  share the queries among all cores, as `evaluate_functional()` does.
 
   \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork`
   \param network the spline
@@ -173,31 +180,34 @@ evaluate_jets(const TriangularSplineNetwork& network,
     const internal::Face_to_patch<GeomTraits, Value> frame(domain, location.face, bezier);
     return frame.jet(location.barycentric, jet_order);
   };
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    const auto& p = queries[q];
-    if (const auto location = locator.locate_snapped(p)) {
-      jets[q] = jet_at(*location, order);
-      continue;
-    }
-    if (outside == Outside::NO_VALUE)
-      continue;
-    const auto nearest = locator.nearest_boundary_point(p);
-    if (!nearest)
-      continue;
-    // the extrapolated value needs the gradient even when only values are asked for
-    Point_jet<Value> jet =
-        jet_at(nearest->location, outside == Outside::LINEAR ? (std::max)(order, 1) : order);
-    if (outside == Outside::LINEAR) {
-      const FT dx = p.x() - nearest->point.x(), dy = p.y() - nearest->point.y();
-      Value value = jet.value + dx * jet.gradient[0] + dy * jet.gradient[1];
-      jet.value = std::move(value);
-      const Value zero = Value_traits<Value>::zero();
-      jet.hessian = {{zero, zero, zero}};
-      if (order < 1)
-        jet.gradient = {{zero, zero}};
-    }
-    jets[q] = std::move(jet);
-  }
+  // the queries are independent: on all cores for inexact number types, each writing its
+  // own entry, so the result does not depend on the number of threads
+  internal::parallel_for_index(
+      queries.size(), internal::query_threads<GeomTraits>(queries.size()), [&](std::size_t q) {
+        const auto& p = queries[q];
+        if (const auto location = locator.locate_snapped(p)) {
+          jets[q] = jet_at(*location, order);
+          return;
+        }
+        if (outside == Outside::NO_VALUE)
+          return;
+        const auto nearest = locator.nearest_boundary_point(p);
+        if (!nearest)
+          return;
+        // the extrapolated value needs the gradient even when only values are asked for
+        Point_jet<Value> jet =
+            jet_at(nearest->location, outside == Outside::LINEAR ? (std::max)(order, 1) : order);
+        if (outside == Outside::LINEAR) {
+          const FT dx = p.x() - nearest->point.x(), dy = p.y() - nearest->point.y();
+          Value value = jet.value + dx * jet.gradient[0] + dy * jet.gradient[1];
+          jet.value = std::move(value);
+          const Value zero = Value_traits<Value>::zero();
+          jet.hessian = {{zero, zero, zero}};
+          if (order < 1)
+            jet.gradient = {{zero, zero}};
+        }
+        jets[q] = std::move(jet);
+      });
   return jets;
 }
 
