@@ -1617,6 +1617,31 @@ TEST(Plan, RulesAreFortyBytesAndKnowTheirSize) {
   EXPECT_GT(two, 0u);
 }
 
+TEST(Plan, FaceNetReadsTheSlotsOfThePatch) {
+  // face_net() places the 21 values from a table and the face's three edges; it must read
+  // exactly the slots that slot(f, index) names, for both orientations of every edge.
+  C1_quintic_spline<Epick> spline(l_shape_with_hole<Epick>(), Corner_frame::CORNER_AND_TWO_STARS);
+  double next = 1;
+  for (const auto s : spline.free_slots())
+    spline.set_free_value(s, next++);
+  spline.propagate();
+  const auto indices = TS::multi_indices(5);
+  std::vector<double> net;
+  std::set<std::uint32_t> seen;
+  for (std::uint32_t f = 0; f < spline.domain().number_of_faces(); ++f) {
+    spline.face_net(f, net);
+    ASSERT_EQ(net.size(), 21u);
+    const auto patch = spline.patch(f);
+    for (std::size_t k = 0; k < 21; ++k) {
+      const auto slot = spline.slot(f, indices[k]);
+      seen.insert(slot);
+      EXPECT_EQ(net[k], spline.value(slot)) << "face " << f << " point " << k;
+      EXPECT_EQ(patch.control_points()[k], spline.value(slot));
+    }
+  }
+  EXPECT_EQ(seen.size(), spline.number_of_slots());
+}
+
 TEST(Tension, FactorsIntegrateTheGradientExactly) {
   // q = x^2 + 3xy - y^2 + x as a quintic: int |grad q|^2 (quadratic: the edge-midpoint rule
   // is exact) and int q_x (linear: area times the centroid's value), on a plain and a thin

@@ -445,17 +445,70 @@ public:
   /// \returns 5, the degree of the patches
   int degree() const { return 5; }
 
+  /// writes the 21 control values of the patch of face `f` (over `face(f)`, in
+  /// `Bezier_triangle::linear_index()` order) to `net`: the patch's net without building the
+  /// patch (evaluation reads it once per query).
+  /// \param f the index of a face
+  /// \param net receives the control values
+  template <class Net>
+  void face_net(Index f, Net& net) const {
+    // Where each of the 21 points lives, by the rules of `slot()`, once: a corner (vertex
+    // v), a point of the edge opposite v (`count`: copies of the next vertex of the face), or
+    // a face point. Per face only its three edges are then read (evaluation reads one net
+    // per query, and 21 calls of `slot()` cost more than the de Casteljau steps).
+    struct Place {
+      int kind, v, count; // kind 0: corner v, 1: edge opposite v, 2: face slot v
+    };
+    static const std::array<Place, 21> places = [] {
+      std::array<Place, 21> result{};
+      std::size_t k = 0;
+      for (const Multi_index& index : multi_indices(5)) {
+        Place place{-1, 0, 0};
+        for (int v = 0; v < 3 && place.kind < 0; ++v)
+          if (index[v] == 5)
+            place = {0, v, 0};
+        for (int v = 0; v < 3 && place.kind < 0; ++v)
+          if (index[v] == 0)
+            place = {1, v, index[(v + 1) % 3]};
+        for (int v = 0; v < 3 && place.kind < 0; ++v)
+          if (index[v] == 3)
+            place = {2, v, 0};
+        for (int v = 0; v < 3 && place.kind < 0; ++v)
+          if (index[v] == 1)
+            place = {2, 3 + v, 0};
+        result[k++] = place;
+      }
+      return result;
+    }();
+    const auto& t = m_domain.face(f);
+    std::array<Index, 3> edge;
+    std::array<bool, 3> next_is_low; // edge opposite v starts at the vertex after v
+    for (int v = 0; v < 3; ++v) {
+      edge[std::size_t(v)] = m_domain.face_edge(f, v);
+      next_is_low[std::size_t(v)] =
+          m_domain.edge(edge[std::size_t(v)])[0] == t[std::size_t((v + 1) % 3)];
+    }
+    net.clear();
+    for (const Place& place : places) {
+      Slot s = 0;
+      if (place.kind == 0)
+        s = vertex_slot(t[std::size_t(place.v)]);
+      else if (place.kind == 1)
+        s = edge_slot(edge[std::size_t(place.v)],
+                      4 - (next_is_low[std::size_t(place.v)] ? place.count : 5 - place.count));
+      else
+        s = face_slot(f, place.v);
+      net.push_back(m_values[s]);
+    }
+  }
+
   /// returns the quintic patch of face `f` over (`face(f)[0]`, `face(f)[1]`, `face(f)[2]`).
   /// \param f the index of a face
   /// \returns the quintic patch of face `f` over (`face(f)[0]`, `face(f)[1]`, `face(f)[2]`)
   Patch patch(Index f) const {
-    // the quintic multi-indices once: every certificate, range check and save asks for
-    // every patch, and building the list each time was a third of the call
-    static const std::vector<Multi_index> indices = multi_indices(5);
     std::vector<Value> net;
     net.reserve(21);
-    for (const Multi_index& index : indices)
-      net.push_back(m_values[slot(f, index)]);
+    face_net(f, net);
     const auto& t = m_domain.face(f);
     return Patch(5, m_domain.point(t[0]), m_domain.point(t[1]), m_domain.point(t[2]),
                  std::move(net), m_domain.geom_traits());
@@ -1023,7 +1076,10 @@ private:
       while (!stack.empty()) {
         auto& [rule, next] = stack.back();
         if (next < m_rules[rule].size()) {
-          const auto found = rule_of.find(m_rules[rule].sources[std::size_t(next++)]);
+          const Slot slot = m_rules[rule].sources[std::size_t(next++)];
+          if (ready[slot]) // free, or computed by a kept rule: no lookup
+            continue;
+          const auto found = rule_of.find(slot);
           const std::uint32_t source = found == rule_of.end() ? none : found->second;
           if (source == none || state[source] == 2)
             continue;

@@ -10,6 +10,7 @@
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/Domain/Domain_locator.h>
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
+#include <CGAL/Triangular_spline/internal/de_casteljau.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
@@ -35,6 +36,16 @@ using Network_patch_t =
 // The value type of a TriangularSplineNetwork's patches.
 template <class Network>
 using Network_value_t = typename Network_patch_t<Network>::Value_type;
+
+// Whether a network writes a face's control net over the face's vertex order without
+// building its patch (`C1_quintic_spline::face_net()`).
+template <class Network, class Net, class = void>
+struct Has_face_net : std::false_type {};
+template <class Network, class Net>
+struct Has_face_net<Network, Net,
+                    std::void_t<decltype(std::declval<const Network&>().face_net(
+                        std::declval<typename Network::Index>(), std::declval<Net&>()))>>
+    : std::true_type {};
 
 // The threads for n queries: all cores for inexact number types from 20000 queries on (a
 // thread costs about 50 microseconds, a query about 0.3), one for exact ones.
@@ -142,12 +153,22 @@ void for_each_location(const Network& network, const Domain_locator<GeomTraits>&
       callback(q, nullptr);
       return;
     }
-    // binds to the source's reference, or extends the life of the returned patch
-    const Patch& bezier = patch(location->face);
-    const Face_to_patch<GeomTraits, typename Patch::Value_type> frame(domain, location->face,
-                                                                      bezier);
-    const typename Patch::Value_type value = frame.evaluate(location->barycentric);
-    callback(q, &value);
+    using Value = typename Patch::Value_type;
+    if constexpr (Has_face_net<Network, Scratch_net<Value>>::value) {
+      // the net straight from the network, over the face's own vertex order: the same
+      // de Casteljau steps as the patch's, without building a patch per query
+      Scratch_net<Value> net;
+      network.face_net(location->face, net);
+      for (int l = 0; l < network.degree(); ++l)
+        de_casteljau_step(net, network.degree() - l, location->barycentric);
+      callback(q, &net[0]);
+    } else {
+      // binds to the source's reference, or extends the life of the returned patch
+      const Patch& bezier = patch(location->face);
+      const Face_to_patch<GeomTraits, Value> frame(domain, location->face, bezier);
+      const Value value = frame.evaluate(location->barycentric);
+      callback(q, &value);
+    }
   });
 }
 
