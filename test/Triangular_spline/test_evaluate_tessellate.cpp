@@ -8,6 +8,7 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/Triangular_spline/Patch_network.h>
 #include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Domain/Domain_locator.h>
@@ -708,6 +709,62 @@ TEST(Jets, ManyQueriesOnAllCoresMatchOneAtATime) {
     }
   }
   EXPECT_GT(outside, 100u);
+  // Spatially sorted, the queries locate from the previous query's face: the same results.
+  std::vector<K::Point_2> sorted = queries;
+  CGAL::hilbert_sort(sorted.begin(), sorted.end());
+  const auto sorted_jets = TS::evaluate_jets(spline, locator, sorted, TS::Outside::LINEAR);
+  for (std::size_t q = 0; q < sorted.size(); q += 7) {
+    const auto one = TS::evaluate_jet(spline, locator, sorted[q], TS::Outside::LINEAR);
+    EXPECT_TRUE(sorted_jets[q]->value == one->value && sorted_jets[q]->gradient == one->gradient &&
+                sorted_jets[q]->hessian == one->hessian)
+        << sorted[q];
+  }
+  // The spline's nets, read without building patches, give its patches' own results.
+  std::vector<Bezier_triangle<K>> patches;
+  for (Index f = 0; f < spline.domain().number_of_faces(); ++f)
+    patches.push_back(spline.patch(f));
+  const TS::Patch_network<K> stored(spline.domain(), patches);
+  const auto via_patches = TS::evaluate_jets(stored, locator, queries, TS::Outside::LINEAR);
+  const std::vector<double> heights_via_patches = TS::evaluate_functional(stored, locator, queries);
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    EXPECT_TRUE(via_patches[q]->value == jets[q]->value &&
+                via_patches[q]->gradient == jets[q]->gradient &&
+                via_patches[q]->hessian == jets[q]->hessian)
+        << queries[q];
+    EXPECT_TRUE(heights_via_patches[q] == heights[q] ||
+                (std::isnan(heights_via_patches[q]) && std::isnan(heights[q])));
+  }
+}
+
+TEST(Locator, TriesTheHintFirst) {
+  // A vertex lies in every face of its star: with a hint from the star it is located in the
+  // hint; a hint elsewhere, none, or a non-finite point give what locate_snapped() gives.
+  using K = Epick;
+  Delaunay<K> dt;
+  const Planar_domain<K> domain = delaunay_domain<K>(dt, 59, 60);
+  const Domain_locator<K> locator(domain);
+  std::size_t tried = 0;
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    const K::Point_2& p = domain.point(v);
+    const auto plain = locator.locate_snapped(p);
+    ASSERT_TRUE(plain.has_value());
+    const auto [fb, fe] = domain.star_faces(v);
+    for (auto f = fb; f != fe; ++f) {
+      const auto hinted = locator.locate_snapped(p, *f);
+      ASSERT_TRUE(hinted.has_value());
+      EXPECT_EQ(hinted->face, *f);
+      ++tried;
+    }
+    for (const Index hint : {Planar_domain<K>::null_index, Index((plain->face + 7) % 11)}) {
+      const auto other = locator.locate_snapped(p, hint);
+      ASSERT_TRUE(other.has_value());
+      const auto& t = domain.face(other->face);
+      EXPECT_TRUE(t[0] == v || t[1] == v || t[2] == v);
+    }
+    EXPECT_EQ(locator.locate_snapped(p, Planar_domain<K>::null_index)->face, plain->face);
+  }
+  EXPECT_GT(tried, 200u);
+  EXPECT_FALSE(locator.locate_snapped(K::Point_2(std::nan(""), 0), 0).has_value());
 }
 
 TYPED_TEST(Output, QueriesOnHullEdgesUpToRoundingGetAValue) {

@@ -42,6 +42,73 @@ struct Point_jet {
   std::array<Value, 3> hessian;
 };
 
+namespace internal {
+
+// The jet of a patch of degree m from its net (destroyed), at barycentric weights w, with
+// dx and dy the barycentric directions of the unit vectors: m-2 de Casteljau steps leave
+// the quadratic net of f(., ., a^(m-2)), whose blossom at (a, a), (e, a) and (e, e') gives
+// the value, F_e / m and F_ee' / (m (m - 1)). Shared by Bezier_triangle::jet_barycentric()
+// and the evaluation of networks that hand out their nets without building patches.
+template <class Net, class FT>
+Point_jet<typename Net::value_type> jet_of_net(Net& net, int m_degree, const std::array<FT, 3>& w,
+                                               const std::array<FT, 3>& dx,
+                                               const std::array<FT, 3>& dy, int order) {
+  using Value = typename Net::value_type;
+  using Weights = std::array<FT, 3>;
+  const Value zero = Value_traits<Value>::zero();
+  Point_jet<Value> jet{zero, {{zero, zero}}, {{zero, zero, zero}}};
+  const int steps = m_degree < 2 ? 0 : m_degree - 2;
+  for (int l = 0; l < steps; ++l)
+    de_casteljau_step(net, m_degree - l, w);
+  // net now has degree min(m, 2); the last steps read it in place (no copies).
+  using Linear = std::array<Value, 3>;
+  // a degree 1 net: (1,0,0) at 2, (0,1,0) at 1, (0,0,1) at 0
+  const auto dot = [](const Linear& l, const Weights& u) -> Value {
+    Value v = u[0] * l[2] + u[1] * l[1] + u[2] * l[0];
+    return v;
+  };
+  if (m_degree == 0) {
+    jet.value = net[0];
+    return jet;
+  }
+  if (m_degree == 1) {
+    const Linear l{{net[0], net[1], net[2]}};
+    jet.value = dot(l, w);
+    if (order >= 1) {
+      jet.gradient[0] = dot(l, dx);
+      jet.gradient[1] = dot(l, dy);
+    }
+    return jet;
+  }
+  // one de Casteljau step of the degree 2 net (positions as in `de_casteljau_step()`)
+  const auto step = [&net](const Weights& u) -> Linear {
+    Value v0 = u[0] * net[3] + u[1] * net[1] + u[2] * net[0];
+    Value v1 = u[0] * net[4] + u[1] * net[2] + u[2] * net[1];
+    Value v2 = u[0] * net[5] + u[1] * net[4] + u[2] * net[3];
+    return Linear{{std::move(v0), std::move(v1), std::move(v2)}};
+  };
+  const Linear at_a = step(w);
+  jet.value = dot(at_a, w);
+  if (order >= 1) {
+    const FT m(m_degree);
+    const Value gx = dot(at_a, dx), gy = dot(at_a, dy);
+    jet.gradient[0] = m * gx;
+    jet.gradient[1] = m * gy;
+  }
+  if (order >= 2) {
+    const FT mm(m_degree * (m_degree - 1));
+    const Linear along_x = step(dx);
+    const Value hxx = dot(along_x, dx), hxy = dot(along_x, dy);
+    const Value hyy = dot(step(dy), dy);
+    jet.hessian[0] = mm * hxx;
+    jet.hessian[1] = mm * hxy;
+    jet.hessian[2] = mm * hyy;
+  }
+  return jet;
+}
+
+} // namespace internal
+
 /*!
   \ingroup PkgTriangularSplineCore
   \brief a polynomial patch of total degree `m` over a domain triangle \f$(r,s,t)\f$ of the
@@ -332,60 +399,11 @@ public:
     `w`, with respect to the domain coordinates \f$(x, y)\f$
   */
   Point_jet<Value> jet_barycentric(const Weights& w, int order = 2) const {
-    const Value zero = Value_traits<Value>::zero();
-    Point_jet<Value> jet{zero, {{zero, zero}}, {{zero, zero, zero}}};
     // barycentric directions of the unit vectors e_x and e_y
     const Weights dx = barycentric_direction(Vector_2(FT(1), FT(0)));
     const Weights dy = barycentric_direction(Vector_2(FT(0), FT(1)));
     internal::Scratch_net<Value> net(m_net.begin(), m_net.end());
-    const int steps = m_degree < 2 ? 0 : m_degree - 2;
-    for (int l = 0; l < steps; ++l)
-      internal::de_casteljau_step(net, m_degree - l, w);
-    // net now has degree min(m, 2); the last steps read it in place (no copies).
-    using Linear = std::array<Value, 3>;
-    // a degree 1 net: (1,0,0) at 2, (0,1,0) at 1, (0,0,1) at 0
-    const auto dot = [](const Linear& l, const Weights& u) -> Value {
-      Value v = u[0] * l[2] + u[1] * l[1] + u[2] * l[0];
-      return v;
-    };
-    if (m_degree == 0) {
-      jet.value = net[0];
-      return jet;
-    }
-    if (m_degree == 1) {
-      const Linear l{{net[0], net[1], net[2]}};
-      jet.value = dot(l, w);
-      if (order >= 1) {
-        jet.gradient[0] = dot(l, dx);
-        jet.gradient[1] = dot(l, dy);
-      }
-      return jet;
-    }
-    // one de Casteljau step of the degree 2 net (positions as in `de_casteljau_step()`)
-    const auto step = [&net](const Weights& u) -> Linear {
-      Value v0 = u[0] * net[3] + u[1] * net[1] + u[2] * net[0];
-      Value v1 = u[0] * net[4] + u[1] * net[2] + u[2] * net[1];
-      Value v2 = u[0] * net[5] + u[1] * net[4] + u[2] * net[3];
-      return Linear{{std::move(v0), std::move(v1), std::move(v2)}};
-    };
-    const Linear at_a = step(w);
-    jet.value = dot(at_a, w);
-    if (order >= 1) {
-      const FT m(m_degree);
-      const Value gx = dot(at_a, dx), gy = dot(at_a, dy);
-      jet.gradient[0] = m * gx;
-      jet.gradient[1] = m * gy;
-    }
-    if (order >= 2) {
-      const FT mm(m_degree * (m_degree - 1));
-      const Linear along_x = step(dx);
-      const Value hxx = dot(along_x, dx), hxy = dot(along_x, dy);
-      const Value hyy = dot(step(dy), dy);
-      jet.hessian[0] = mm * hxx;
-      jet.hessian[1] = mm * hxy;
-      jet.hessian[2] = mm * hyy;
-    }
-    return jet;
+    return internal::jet_of_net(net, m_degree, w, dx, dy, order);
   }
 
   /// returns the value, gradient and Hessian of \f$F\f$ at `a` (see `jet_barycentric()`).

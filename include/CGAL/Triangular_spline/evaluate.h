@@ -37,9 +37,11 @@ namespace Triangular_spline {
 
   With an inexact number type the queries are shared among all cores from 20000 queries on
   (`network.patch()` is then called concurrently, as `certify_continuity()` does); each
-  result is computed as on one thread. Queries in spatial order (e.g. along a grid, or
-  sorted with `CGAL::hilbert_sort()`) run several times faster than random ones: the
-  patches and the locator's buckets they read stay in the cache.
+  result is computed as on one thread. Each query first tries the triangle of the previous
+  query of its thread (`Domain_locator::locate_snapped()` with a hint). Queries in spatial
+  order (along a grid, or sorted with `CGAL::hilbert_sort()`) run 2 to 4 times faster than
+  random ones (measured from 20000 to 200000 triangles): the hint hits, and the patches and
+  buckets they read stay in the cache.
 
   \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork` with scalar values
   \param network the spline
@@ -175,17 +177,31 @@ evaluate_jets(const TriangularSplineNetwork& network,
   std::vector<std::optional<Point_jet<Value>>> jets(queries.size());
   const auto jet_at = [&](const typename Domain_locator<GeomTraits>::Location& location,
                           int jet_order) {
-    // binds to the source's reference, or extends the life of the returned patch
-    const Patch& bezier = patch(location.face);
-    const internal::Face_to_patch<GeomTraits, Value> frame(domain, location.face, bezier);
-    return frame.jet(location.barycentric, jet_order);
+    if constexpr (internal::Has_face_net<TriangularSplineNetwork,
+                                         internal::Scratch_net<Value>>::value) {
+      // the net straight from the network, over the face's vertex order (what its patch
+      // would compute, without building the patch)
+      internal::Scratch_net<Value> net;
+      network.face_net(location.face, net);
+      const auto& t = domain.face(location.face);
+      const auto [dx, dy] =
+          internal::unit_directions(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+      return internal::jet_of_net(net, network.degree(), location.barycentric, dx, dy, jet_order);
+    } else {
+      // binds to the source's reference, or extends the life of the returned patch
+      const Patch& bezier = patch(location.face);
+      const internal::Face_to_patch<GeomTraits, Value> frame(domain, location.face, bezier);
+      return frame.jet(location.barycentric, jet_order);
+    }
   };
   // the queries are independent: on all cores for inexact number types, each writing its
   // own entry, so the result does not depend on the number of threads
   internal::parallel_for_index(
       queries.size(), internal::query_threads<GeomTraits>(queries.size()), [&](std::size_t q) {
         const auto& p = queries[q];
-        if (const auto location = locator.locate_snapped(p)) {
+        auto& hint = internal::previous_face(locator, q);
+        if (const auto location = locator.locate_snapped(p, hint)) {
+          hint = location->face;
           jets[q] = jet_at(*location, order);
           return;
         }

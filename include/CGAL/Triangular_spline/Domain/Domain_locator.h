@@ -180,6 +180,21 @@ public:
     return best->location;
   }
 
+  /// returns `locate_snapped(p)`, trying the triangle `hint` first (the triangle of a
+  /// previous, nearby query; `Domain::null_index` for none). Consecutive queries of a grid
+  /// or of spatially sorted points often fall in the same triangle, which then costs one
+  /// test instead of a bucket's. A point on an edge or at a vertex of `hint` is located in
+  /// `hint`, which is one of its incident triangles as `locate()` promises.
+  /// \param p the query point
+  /// \param hint a face index, or `Domain::null_index`
+  /// \returns the location, or `std::nullopt`
+  std::optional<Location> locate_snapped(const Point_2& p, Index hint) const {
+    if (hint < m_domain.number_of_faces() && CGAL::is_finite(p.x()) && CGAL::is_finite(p.y()))
+      if (std::optional<Location> location = locate_in(hint, p))
+        return location;
+    return locate_snapped(p);
+  }
+
   /// returns the point of the domain boundary (outer boundaries and holes) nearest to `p`,
   /// whether `p` is inside the domain or not, or `std::nullopt` if `p` is not finite or the
   /// domain is empty. Distances are compared in `FT` (exactly for exact number types);

@@ -47,6 +47,22 @@ struct Has_face_net<Network, Net,
                         std::declval<typename Network::Index>(), std::declval<Net&>()))>>
     : std::true_type {};
 
+// The barycentric directions, over the triangle (r, s, t), of the unit vectors e_x and e_y,
+// computed as `Bezier_triangle::barycentric_direction()` does (the same operations, so the
+// same bits): the derivatives of a net read without its patch.
+template <class Point_2>
+auto unit_directions(const Point_2& r, const Point_2& s, const Point_2& t) {
+  using FT = std::decay_t<decltype(r.x())>;
+  const FT sx = s.x() - r.x(), sy = s.y() - r.y(), tx = t.x() - r.x(), ty = t.y() - r.y();
+  const FT inverse_area2 = FT(1) / (sx * ty - sy * tx);
+  auto direction = [&](const FT& ux, const FT& uy) {
+    const FT mu = (ux * ty - uy * tx) * inverse_area2;
+    const FT nu = (sx * uy - sy * ux) * inverse_area2;
+    return std::array<FT, 3>{{-mu - nu, mu, nu}};
+  };
+  return std::make_pair(direction(FT(1), FT(0)), direction(FT(0), FT(1)));
+}
+
 // The threads for n queries: all cores for inexact number types from 20000 queries on (a
 // thread costs about 50 microseconds, a query about 0.3), one for exact ones.
 template <class GeomTraits>
@@ -135,6 +151,18 @@ private:
   bool m_matched = true;
 };
 
+// The face of the thread's previous query, the hint of the next one's location, restarted
+// at every block of parallel_for_index(): a block runs on one thread in order, so each
+// query's hint, and the face an edge point falls in, do not depend on the number of threads.
+template <class GeomTraits>
+typename Planar_domain<GeomTraits>::Index& previous_face(const Domain_locator<GeomTraits>&,
+                                                         std::size_t q) {
+  thread_local typename Planar_domain<GeomTraits>::Index face;
+  if (q % parallel_block == 0)
+    face = Planar_domain<GeomTraits>::null_index;
+  return face;
+}
+
 // Locates each query and calls callback(q, &value), or callback(q, nullptr) outside. With
 // an inexact number type the queries are shared among all cores (callback must then be safe
 // to call concurrently for distinct q, e.g. write only entry q of a result); exact ones stay
@@ -148,11 +176,13 @@ void for_each_location(const Network& network, const Domain_locator<GeomTraits>&
   const auto& domain = network.domain();
   auto patch = patch_source(network);
   parallel_for_index(queries.size(), query_threads<GeomTraits>(queries.size()), [&](std::size_t q) {
-    const auto location = locator.locate_snapped(queries[q]);
+    auto& hint = previous_face(locator, q);
+    const auto location = locator.locate_snapped(queries[q], hint);
     if (!location) {
       callback(q, nullptr);
       return;
     }
+    hint = location->face;
     using Value = typename Patch::Value_type;
     if constexpr (Has_face_net<Network, Scratch_net<Value>>::value) {
       // the net straight from the network, over the face's own vertex order: the same
