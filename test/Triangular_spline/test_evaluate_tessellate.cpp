@@ -736,6 +736,41 @@ TEST(Jets, ManyQueriesOnAllCoresMatchOneAtATime) {
   }
 }
 
+TEST(Locator, EvaluationOrderGroupsRandomQueriesByBucket) {
+  // Random queries are evaluated bucket by bucket (a stable counting sort); queries already
+  // in spatial order (a grid's rows) and few queries keep their own order.
+  using K = Epick;
+  Delaunay<K> dt;
+  const Planar_domain<K> domain = delaunay_domain<K>(dt, 61, 200);
+  const Domain_locator<K> locator(domain);
+  std::mt19937_64 engine(11);
+  std::uniform_real_distribution<double> u(-25, 25); // beyond the domain too
+  std::vector<K::Point_2> random, grid;
+  for (int i = 0; i < 30000; ++i)
+    random.emplace_back(u(engine), u(engine));
+  random.emplace_back(std::nan(""), 0.0);
+  for (int j = 0; j < 200; ++j)
+    for (int i = 0; i < 200; ++i)
+      grid.emplace_back(-20 + 0.2 * i, -20 + 0.2 * j);
+  const std::vector<std::size_t> order = TS::internal::evaluation_order(locator, random);
+  ASSERT_EQ(order.size(), random.size());
+  std::vector<char> seen(random.size(), 0);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    ASSERT_LT(order[i], random.size());
+    EXPECT_FALSE(seen[order[i]]);
+    seen[order[i]] = 1;
+    if (i > 0) {
+      const std::size_t a = locator.bucket(random[order[i - 1]]),
+                        b = locator.bucket(random[order[i]]);
+      EXPECT_TRUE(a < b || (a == b && order[i - 1] < order[i])) << i;
+    }
+  }
+  EXPECT_EQ(locator.bucket(random.back()), locator.number_of_buckets());
+  EXPECT_TRUE(TS::internal::evaluation_order(locator, grid).empty());
+  random.resize(19999);
+  EXPECT_TRUE(TS::internal::evaluation_order(locator, random).empty());
+}
+
 TEST(Locator, TriesTheHintFirst) {
   // A vertex lies in every face of its star: with a hint from the star it is located in the
   // hint; a hint elsewhere, none, or a non-finite point give what locate_snapped() gives.

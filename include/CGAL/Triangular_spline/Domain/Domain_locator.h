@@ -256,6 +256,19 @@ public:
   /// returns the number of buckets of the grid.
   /// \returns the number of buckets of the grid
   std::size_t number_of_buckets() const { return m_nx * m_ny; }
+  /// returns the bucket of the grid that `p` falls in (row-major, in
+  /// [0, `number_of_buckets()`)), or `number_of_buckets()` for a point outside the grid's box
+  /// or not finite: a key for ordering queries so that neighbours come together.
+  /// \param p the point
+  /// \returns the bucket index, or `number_of_buckets()`
+  std::size_t bucket(const Point_2& p) const {
+    if (!CGAL::is_finite(p.x()) || !CGAL::is_finite(p.y()))
+      return number_of_buckets();
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    if (!(x >= m_xmin && x <= m_xmax && y >= m_ymin && y <= m_ymax))
+      return number_of_buckets();
+    return cell(x, y);
+  }
   /// returns the number of (bucket, triangle) registrations.
   /// \returns the number of (bucket, triangle) registrations
   std::size_t number_of_entries() const { return m_entries.size(); }

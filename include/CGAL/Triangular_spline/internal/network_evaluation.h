@@ -163,6 +163,38 @@ typename Planar_domain<GeomTraits>::Index& previous_face(const Domain_locator<Ge
   return face;
 }
 
+// The order in which to evaluate the queries: from 20000 queries on, a counting sort by the
+// locator's bucket (O(n), stable), so that consecutive queries share triangles, patches and
+// buckets in the cache and the previous face is a good hint (random queries ran 2.6 times
+// slower than the same queries Hilbert-sorted). Empty, for the input order, for fewer
+// queries and for queries already in spatial order (a quarter of them in the bucket of the
+// one before: grids and sorted points, whose own order keeps the cache better than rows of
+// buckets do: Hilbert-sorted queries lost 15% to the sort).
+template <class GeomTraits>
+std::vector<std::size_t>
+evaluation_order(const Domain_locator<GeomTraits>& locator,
+                 const std::vector<typename GeomTraits::Point_2>& queries) {
+  std::vector<std::size_t> order;
+  if (queries.size() < 20000)
+    return order;
+  const std::size_t B = locator.number_of_buckets();
+  std::vector<std::size_t> key(queries.size()), start(B + 2, 0);
+  std::size_t same = 0;
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    key[q] = locator.bucket(queries[q]);
+    ++start[key[q] + 1];
+    same += q > 0 && key[q] == key[q - 1] ? 1 : 0;
+  }
+  if (4 * same >= queries.size())
+    return order;
+  for (std::size_t b = 0; b <= B; ++b)
+    start[b + 1] += start[b];
+  order.resize(queries.size());
+  for (std::size_t q = 0; q < queries.size(); ++q)
+    order[start[key[q]]++] = q;
+  return order;
+}
+
 // Locates each query and calls callback(q, &value), or callback(q, nullptr) outside. With
 // an inexact number type the queries are shared among all cores (callback must then be safe
 // to call concurrently for distinct q, e.g. write only entry q of a result); exact ones stay
@@ -175,8 +207,10 @@ void for_each_location(const Network& network, const Domain_locator<GeomTraits>&
   using Patch = Network_patch_t<Network>;
   const auto& domain = network.domain();
   auto patch = patch_source(network);
-  parallel_for_index(queries.size(), query_threads<GeomTraits>(queries.size()), [&](std::size_t q) {
-    auto& hint = previous_face(locator, q);
+  const std::vector<std::size_t> order = evaluation_order(locator, queries);
+  parallel_for_index(queries.size(), query_threads<GeomTraits>(queries.size()), [&](std::size_t i) {
+    const std::size_t q = order.empty() ? i : order[i];
+    auto& hint = previous_face(locator, i);
     const auto location = locator.locate_snapped(queries[q], hint);
     if (!location) {
       callback(q, nullptr);
