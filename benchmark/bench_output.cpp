@@ -116,30 +116,33 @@ void BM_locator_query(benchmark::State& state) {
 }
 BENCHMARK(BM_locator_query);
 
-// Arg 0: random query order; 1: the same queries Hilbert-sorted (spatially ordered, as
-// grids and sorted lidar points are). Real time: the queries run on all cores.
-void BM_evaluate_functional(benchmark::State& state) {
+// Queries for the evaluation benchmarks. Arg 0: random order; 1: the same queries
+// Hilbert-sorted (spatially ordered, as grids and sorted lidar points are). Real time: the
+// queries run on all cores.
+template <class Evaluate>
+void evaluate_queries(benchmark::State& state, const Evaluate& evaluate) {
   const TS::Domain_locator<K> locator(network().domain());
   std::vector<K::Point_2> points = queries(1 << 18);
   if (state.range(0) == 1)
     CGAL::hilbert_sort(points.begin(), points.end());
   for (auto _ : state)
-    benchmark::DoNotOptimize(TS::evaluate_functional(network(), locator, points));
+    benchmark::DoNotOptimize(evaluate(locator, points));
   state.counters["queries/s"] = benchmark::Counter(
       double(points.size()) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void BM_evaluate_functional(benchmark::State& state) {
+  evaluate_queries(state, [](const auto& locator, const auto& points) {
+    return TS::evaluate_functional(network(), locator, points);
+  });
 }
 BENCHMARK(BM_evaluate_functional)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The same with value, gradient and Hessian (evaluate_jets, order 2).
 void BM_evaluate_jets(benchmark::State& state) {
-  const TS::Domain_locator<K> locator(network().domain());
-  std::vector<K::Point_2> points = queries(1 << 18);
-  if (state.range(0) == 1)
-    CGAL::hilbert_sort(points.begin(), points.end());
-  for (auto _ : state)
-    benchmark::DoNotOptimize(TS::evaluate_jets(network(), locator, points));
-  state.counters["queries/s"] = benchmark::Counter(
-      double(points.size()) * double(state.iterations()), benchmark::Counter::kIsRate);
+  evaluate_queries(state, [](const auto& locator, const auto& points) {
+    return TS::evaluate_jets(network(), locator, points);
+  });
 }
 BENCHMARK(BM_evaluate_jets)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -196,36 +196,31 @@ evaluate_jets(const TriangularSplineNetwork& network,
   };
   // the queries are independent: on all cores for inexact number types, each writing its
   // own entry, so the result does not depend on the number of threads
-  const std::vector<std::size_t> sequence = internal::evaluation_order(locator, queries);
-  internal::parallel_for_index(
-      queries.size(), internal::query_threads<GeomTraits>(queries.size()), [&](std::size_t i) {
-        const std::size_t q = sequence.empty() ? i : sequence[i];
-        const auto& p = queries[q];
-        auto& hint = internal::previous_face(locator, i);
-        if (const auto location = locator.locate_snapped(p, hint)) {
-          hint = location->face;
-          jets[q] = jet_at(*location, order);
-          return;
-        }
-        if (outside == Outside::NO_VALUE)
-          return;
-        const auto nearest = locator.nearest_boundary_point(p);
-        if (!nearest)
-          return;
-        // the extrapolated value needs the gradient even when only values are asked for
-        Point_jet<Value> jet =
-            jet_at(nearest->location, outside == Outside::LINEAR ? (std::max)(order, 1) : order);
-        if (outside == Outside::LINEAR) {
-          const FT dx = p.x() - nearest->point.x(), dy = p.y() - nearest->point.y();
-          Value value = jet.value + dx * jet.gradient[0] + dy * jet.gradient[1];
-          jet.value = std::move(value);
-          const Value zero = Value_traits<Value>::zero();
-          jet.hessian = {{zero, zero, zero}};
-          if (order < 1)
-            jet.gradient = {{zero, zero}};
-        }
-        jets[q] = std::move(jet);
-      });
+  internal::for_each_query_location(locator, queries, [&](std::size_t q, const auto& location) {
+    const auto& p = queries[q];
+    if (location) {
+      jets[q] = jet_at(*location, order);
+      return;
+    }
+    if (outside == Outside::NO_VALUE)
+      return;
+    const auto nearest = locator.nearest_boundary_point(p);
+    if (!nearest)
+      return;
+    // the extrapolated value needs the gradient even when only values are asked for
+    Point_jet<Value> jet =
+        jet_at(nearest->location, outside == Outside::LINEAR ? (std::max)(order, 1) : order);
+    if (outside == Outside::LINEAR) {
+      const FT dx = p.x() - nearest->point.x(), dy = p.y() - nearest->point.y();
+      Value value = jet.value + dx * jet.gradient[0] + dy * jet.gradient[1];
+      jet.value = std::move(value);
+      const Value zero = Value_traits<Value>::zero();
+      jet.hessian = {{zero, zero, zero}};
+      if (order < 1)
+        jet.gradient = {{zero, zero}};
+    }
+    jets[q] = std::move(jet);
+  });
   return jets;
 }
 

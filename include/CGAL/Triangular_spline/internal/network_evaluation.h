@@ -63,13 +63,17 @@ auto unit_directions(const Point_2& r, const Point_2& s, const Point_2& t) {
   return std::make_pair(direction(FT(1), FT(0)), direction(FT(0), FT(1)));
 }
 
-// The threads for n queries: all cores for inexact number types from 20000 queries on (a
-// thread costs about 50 microseconds, a query about 0.3), one for exact ones.
+// From this many queries on, evaluation runs on all cores (inexact number types) and
+// reorders queries in no spatial order: a thread costs about 50 microseconds, a query
+// about 0.3.
+constexpr std::size_t many_queries = 20000;
+
+// The threads for n queries: all cores for inexact number types, one for exact ones.
 template <class GeomTraits>
 std::size_t query_threads(std::size_t n) {
   return CGAL::Algebraic_structure_traits<typename GeomTraits::FT>::Is_exact::value
              ? 1
-             : thread_count(n, 20000);
+             : thread_count(n, many_queries);
 }
 
 // A patch source reading the network (by reference when the network returns references).
@@ -175,7 +179,7 @@ std::vector<std::size_t>
 evaluation_order(const Domain_locator<GeomTraits>& locator,
                  const std::vector<typename GeomTraits::Point_2>& queries) {
   std::vector<std::size_t> order;
-  if (queries.size() < 20000)
+  if (queries.size() < many_queries)
     return order;
   const std::size_t B = locator.number_of_buckets();
   std::vector<std::size_t> key(queries.size()), start(B + 2, 0);
@@ -195,29 +199,40 @@ evaluation_order(const Domain_locator<GeomTraits>& locator,
   return order;
 }
 
-// Locates each query and calls callback(q, &value), or callback(q, nullptr) outside. With
-// an inexact number type the queries are shared among all cores (callback must then be safe
-// to call concurrently for distinct q, e.g. write only entry q of a result); exact ones stay
-// on the calling thread (their arithmetic allocates, and exact queries are few).
+// Calls f(q, location) for every query q, location being `locator.locate_snapped()` of it
+// (std::nullopt outside): in `evaluation_order()`, each query hinted with the face of the one
+// before, on all cores for inexact number types (f must then be safe to call concurrently
+// for distinct q, e.g. write only entry q of a result). The loop of every evaluation.
+template <class GeomTraits, class F>
+void for_each_query_location(const Domain_locator<GeomTraits>& locator,
+                             const std::vector<typename GeomTraits::Point_2>& queries, const F& f) {
+  const std::vector<std::size_t> order = evaluation_order(locator, queries);
+  parallel_for_index(queries.size(), query_threads<GeomTraits>(queries.size()), [&](std::size_t i) {
+    const std::size_t q = order.empty() ? i : order[i];
+    auto& hint = previous_face(locator, i);
+    const auto location = locator.locate_snapped(queries[q], hint);
+    if (location)
+      hint = location->face;
+    f(q, location);
+  });
+}
+
+// Locates each query and calls callback(q, &value), or callback(q, nullptr) outside, as
+// for_each_query_location() does (callback must be safe to call concurrently for distinct q).
 template <class Network, class GeomTraits, class Callback>
 void for_each_location(const Network& network, const Domain_locator<GeomTraits>& locator,
                        const std::vector<typename GeomTraits::Point_2>& queries,
                        Callback callback) {
   CGAL_precondition(is_locator_of(network, locator));
   using Patch = Network_patch_t<Network>;
+  using Value = typename Patch::Value_type;
   const auto& domain = network.domain();
   auto patch = patch_source(network);
-  const std::vector<std::size_t> order = evaluation_order(locator, queries);
-  parallel_for_index(queries.size(), query_threads<GeomTraits>(queries.size()), [&](std::size_t i) {
-    const std::size_t q = order.empty() ? i : order[i];
-    auto& hint = previous_face(locator, i);
-    const auto location = locator.locate_snapped(queries[q], hint);
+  for_each_query_location(locator, queries, [&](std::size_t q, const auto& location) {
     if (!location) {
       callback(q, nullptr);
       return;
     }
-    hint = location->face;
-    using Value = typename Patch::Value_type;
     if constexpr (Has_face_net<Network, Scratch_net<Value>>::value) {
       // the net straight from the network, over the face's own vertex order: the same
       // de Casteljau steps as the patch's, without building a patch per query
