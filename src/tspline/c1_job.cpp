@@ -334,7 +334,8 @@ Json run(const C1_job& job, std::ostream& out) {
     sampled_max = (std::max)(sampled_max, face_value[f]);
   }
   double control_min = HUGE_VAL, control_max = -HUGE_VAL;
-  for (const auto& value : spline.values()) {
+  for (std::size_t s = 0; s < spline.number_of_slots(); ++s) {
+    const auto& value = spline.values()[s];
     control_min = (std::min)(control_min, CGAL::to_double(value));
     control_max = (std::max)(control_max, CGAL::to_double(value));
   }
@@ -450,9 +451,10 @@ Json run(const C1_job& job, std::ostream& out) {
   report["max_propagation_weight"] = spline.max_propagation_weight();
   report["propagation_amplification"] = amplification;
   {
-    // Where the largest weights are: by the role of the computed point.
-    std::array<double, 5> by_kind{};
-    std::array<std::size_t, 5> above_bound{};
+    // Where the largest weights are: by the role of the computed point (auxiliary: the
+    // partial sums of the closing rules at near-singular vertices).
+    std::array<double, 6> by_kind{};
+    std::array<std::size_t, 6> above_bound{};
     for (const auto& rule : spline.rules()) {
       const std::size_t kind = std::size_t(spline.kind(rule.target));
       double largest = 0;
@@ -462,8 +464,8 @@ Json run(const C1_job& job, std::ostream& out) {
       above_bound[kind] += largest > Spline::propagation_weight_bound ? 1 : 0;
     }
     Json kinds = Json::object(), counts = Json::object();
-    const char* names[] = {"corner", "star", "edge_middle", "corner_inner", "flip"};
-    for (std::size_t k = 0; k < 5; ++k) {
+    const char* names[] = {"corner", "star", "edge_middle", "corner_inner", "flip", "auxiliary"};
+    for (std::size_t k = 0; k < 6; ++k) {
       kinds[names[k]] = by_kind[k];
       counts[names[k]] = above_bound[k];
     }

@@ -56,7 +56,8 @@ enum class Slot_kind {
   STAR,         ///< \f$f(v^4 w)\f$, two per edge
   EDGE_MIDDLE,  ///< \f$f(v^3 w^2)\f$, two per edge
   CORNER_INNER, ///< \f$f(a^3 b c)\f$, three per face
-  MIDDLE_INNER  ///< \f$f(a b^2 c^2)\f$ (the flip points of interior edges), three per face
+  MIDDLE_INNER, ///< \f$f(a b^2 c^2)\f$ (the flip points of interior edges), three per face
+  AUXILIARY     ///< not a control point: a partial sum of a rule of more than three sources
 };
 
 /*!
@@ -87,7 +88,12 @@ enum class Slot_kind {
   corner-inner point from its neighbour. Around a singular vertex the four constraints form
   a cycle of which one is implied: one corner-inner point stays free, which is the extra
   dimension \f$\sigma\f$. No rule ever divides by zero; the free count is
-  \f$3V + 3F + E_I + 3E_B + \sigma\f$.
+  \f$3V + 3F + E_I + 3E_B + \sigma\f$. Thin frames (regular weights above
+  `propagation_weight_bound`) are re-routed the same way. At a near-singular vertex (every
+  edge end thin or degenerate, the vertex not singular) the cycle of links cannot be closed,
+  and the one link left regular is written directly in the free data, a rule of up to eight
+  sources whose partial sums live in auxiliary slots: no weight grows as the vertex nears
+  singularity.
 
   Domain points are those of `GeomTraits`; all geometric decisions use its exact
   predicates. With an exact number type every coefficient and every control point is
@@ -122,10 +128,17 @@ public:
   using Degenerate_frame = Degenerate_frame_t<Index>;
   /// the bound on the weights of the edge rules: an edge end whose regular rule (Xu's
   /// condition 3.5 solved for its edge-middle point) would use a weight above it is
-  /// re-routed as a thin frame, where every weight is at most about 2.
+  /// re-routed as a thin frame, where every weight is at most about 2. At a near-singular
+  /// vertex, whose cycle of re-routed links cannot be closed, the one link left regular is
+  /// written in the free data (`number_of_auxiliary_slots()`), with weights of about 10
+  /// however close the vertex is to singular.
   ///
-  /// Three kinds of rule can still exceed it, each a property of the triangulation rather
-  /// than of one frame (on random points about 2 rules in 10^4):
+  /// Two kinds of rule can still exceed it, each a property of thin triangles rather than of
+  /// a frame (on random points about 1.5 rules in 10^3 faces); their weights stay below
+  /// \f$8/\sin\theta\f$, \f$\theta\f$ the smallest angle of the triangles at the vertices of
+  /// the rule's points (measured on random points and jittered grids, and tested), as the
+  /// stability constants of Lai and Schumaker's minimal determining sets, which depend on the
+  /// smallest angle alone:
   /// - star points: the affine image of a vertex's three prescribed points; large where
   ///   every edge at the vertex is close to one line (a vertex on a nearly straight hull).
   ///   These cannot amplify inconsistent data: any three values lie on one plane.
@@ -133,8 +146,7 @@ public:
   ///   slivers): the middle diamond is solved for the larger flip coefficient, so the
   ///   weight is the ratio of the quadrilateral's largest sub-triangle to the larger face,
   ///   about 1/sin of the faces' smallest angle. Re-routing the edge moves the same ratio
-  ///   into the corner-inner links.
-  /// - the one regular link at each of the `near_singular_vertices()`.
+  ///   into the corner-inner links (a few of which also exceed the bound).
   static constexpr double propagation_weight_bound = 16;
   /// an invalid slot index, marking an unused source of a `Rule`
   static constexpr Slot null_slot = (std::numeric_limits<Slot>::max)();
@@ -143,7 +155,8 @@ public:
   using Polar_label = boost::container::static_vector<std::pair<Index, int>, 3>;
 
   /// how a dependent slot is computed: `value(target) = sum weights[i] * value(sources[i])`
-  /// over the first `size` sources (the weights sum to one)
+  /// over the first `size()` sources (the weights of a control point's rule sum to one; a
+  /// partial sum in an auxiliary slot is a linear combination)
   struct Rule {
     Slot target;                 ///< the dependent slot computed by the rule
     std::array<Slot, 3> sources; ///< the source slots; an unused third one is `null_slot`
@@ -168,7 +181,8 @@ public:
                       F = m_domain.number_of_faces();
     if (V + 4 * E + 6 * F >= null_slot)
       throw Invalid_input("spline: domain too large for 32-bit slot indices");
-    m_values.assign(V + 4 * E + 6 * F, zero());
+    m_control_slots = V + 4 * E + 6 * F;
+    m_values.assign(m_control_slots, zero());
     m_free.assign(m_values.size(), 0);
     build_plan();
   }
@@ -185,7 +199,13 @@ public:
   Corner_frame corner_frame() const { return m_frame; }
   /// returns the number of control-point slots, \f$V + 4E + 6F\f$.
   /// \returns the number of control-point slots, \f$V + 4E + 6F\f$
-  std::size_t number_of_slots() const { return m_values.size(); }
+  std::size_t number_of_slots() const { return m_control_slots; }
+  /// returns the number of auxiliary slots: they follow the control points (slots
+  /// `number_of_slots()` and up) and hold partial sums of the rules of more than three
+  /// sources, which close the links of `near_singular_vertices()` (two per such vertex,
+  /// none on most domains). They are neither free nor control points.
+  /// \returns the number of auxiliary slots
+  std::size_t number_of_auxiliary_slots() const { return m_values.size() - m_control_slots; }
   /// the corner slot of vertex `v`
   /// \param v the index of a vertex
   /// \returns the corner slot of `v`
@@ -216,6 +236,8 @@ public:
   /// \returns the role of slot `s`
   Slot_kind kind(Slot s) const {
     const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
+    if (s >= m_control_slots)
+      return Slot_kind::AUXILIARY;
     if (s < V)
       return Slot_kind::CORNER;
     if (s < V + 4 * E) {
@@ -227,9 +249,11 @@ public:
 
   /// returns the polar label of slot `s`: the domain vertices and multiplicities
   /// (summing to 5) of the blossom argument \f$f(u^a v^b w^c)\f$ whose value it holds
+  /// \pre `s < number_of_slots()` (auxiliary slots have no label)
   /// \param s a control-point slot
   /// \returns the polar label of `s`
   Polar_label polar_label(Slot s) const {
+    CGAL_precondition(s < m_control_slots);
     const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
     if (s < V)
       return {{static_cast<Index>(s), 5}};
@@ -296,13 +320,12 @@ public:
   /// returns an estimate of how much the propagation amplifies inconsistent prescribed
   /// points: the largest absolute control value when every corner region is zero and every
   /// other free point is an independent random sign (fixed seed, computed in double on a
-  /// copy; one pass over the rules). A single weight above `propagation_weight_bound` need
-  /// not amplify: at a near-singular vertex the large weights combine points whose
-  /// deviations cancel (a vertex 1e-8 degrees from singular: largest weight 1e10, this
-  /// estimate 4). Corner regions are left out because any three values are one plane: their
-  /// weights extrapolate a tangent plane, they cannot amplify an inconsistency. With every
-  /// weight at most the bound the estimate stays below about twice the bound (a rule's
-  /// weights sum to one).
+  /// copy; one pass over the rules). A single weight need not amplify: weights that combine
+  /// points whose deviations cancel do not (the closing link of a vertex 1e-8 degrees from
+  /// singular, solved alone, had weights of 1e10 and this estimate 4). Corner regions are
+  /// left out because any three values are one plane: their weights extrapolate a tangent
+  /// plane, they cannot amplify an inconsistency. With every weight at most the bound the
+  /// estimate stays below about twice the bound (a rule's weights sum to one).
   /// \returns the estimated amplification (0 if no point outside the corner regions is free)
   double propagation_amplification() const {
     std::vector<float> x(m_values.size(), 0.0f); // float: an estimate, half the memory
@@ -331,11 +354,13 @@ public:
   /// \returns the number of plan builds
   int plan_rounds() const { return m_plan_rounds; }
   /// returns the near-singular vertices: interior vertices at which every edge is thin or
-  /// degenerate, but not every one degenerate (those are singular). Their re-routed links
-  /// would close a cycle that, unlike a singular vertex's, is not implied, so the thinnest
-  /// link keeps its regular rule: its edge-middle point takes weights of about \f$1/\delta\f$,
-  /// \f$\delta\f$ the sine of the angle by which the vertex misses being singular (see
-  /// `propagation_weight_bound`).
+  /// degenerate, but not every one degenerate (those are singular; such a vertex has degree
+  /// 4, its edges close to two lines). Their re-routed links would close a cycle that, unlike
+  /// a singular vertex's, is not implied, so the thinnest link keeps its regular condition.
+  /// Solved alone for its edge-middle point that condition has weights of about
+  /// \f$1/\delta\f$, \f$\delta\f$ the sine of the angle by which the vertex misses being
+  /// singular; the plan writes the point in the free data instead (the frame's three points,
+  /// the other links' edge-middle points), with coefficients of about 10, computed exactly.
   /// \returns the near-singular vertices, each once
   const std::vector<Index>& near_singular_vertices() const { return m_near_singular; }
   /// returns the interior singular vertices (each adds one free parameter)
@@ -350,8 +375,9 @@ public:
   /// \param s a control-point slot
   /// \returns the control value held by slot `s`
   const Value& value(Slot s) const { return m_values[s]; }
-  /// returns the control values of all slots, indexed by slot.
-  /// \returns the control values of all slots, indexed by slot
+  /// returns the values of all slots, indexed by slot: the `number_of_slots()` control
+  /// values, then the `number_of_auxiliary_slots()` partial sums.
+  /// \returns the values of all slots, indexed by slot
   const std::vector<Value>& values() const { return m_values; }
 
   /// sets the free slot `s` without propagating (use `propagate()` after a batch).
@@ -665,6 +691,13 @@ private:
   }
 
   // How the edge-middle point next to end `vertex` of an interior edge is computed.
+  // A link of step 2 as emitted: position i (between star faces i-1 and i), and which of its
+  // two corner-inner points it was solved for.
+  struct Emitted_link {
+    std::size_t position;
+    bool solve_before;
+  };
+
   enum class End_route : unsigned char {
     REGULAR,    // from the corner diamond at the end (the usual rule)
     DEGENERATE, // apexes exactly collinear with the end (or up to rounding in double)
@@ -743,6 +776,7 @@ private:
     for (;;) {
       ++m_plan_rounds;
       m_rules.clear();
+      m_values.resize(m_control_slots); // auxiliary slots are made anew by each round
       m_free.assign(m_values.size(), 0);
       m_free_slots.clear();
       std::vector<Index> thin_edge_of_rule;
@@ -807,11 +841,14 @@ private:
     std::vector<char> inner_dependent(F * std::size_t(3), 0);
     struct Link {
       Index edge;
+      std::size_t position;                // i: the link between star faces i-1 and i
       std::size_t face_before, face_after; // positions in the star of r
       FT mu_before, mu_after, mu_edge;     // star = mu_before CI_before + mu_edge EM + ...
       bool with_edge_point;
     };
     std::vector<Link> path;
+    std::vector<Emitted_link> emitted; // the links of r as solved, in emission order
+    m_closing.clear();
     for (Index r = 0; r < V; ++r) {
       const auto [fb, fe] = m_domain.star_faces(r);
       const auto [eb, ee] = m_domain.star_edges(r);
@@ -826,6 +863,8 @@ private:
         links += linked(i) ? 1 : 0;
       if (links == 0)
         continue;
+      Index closing = Domain::null_index; // the regular link of a near-singular vertex
+      emitted.clear();
       if (!boundary && links == k) {
         // A full cycle: implied only if every link is degenerate (a singular vertex).
         std::size_t thinnest = k;
@@ -838,6 +877,19 @@ private:
         if (thinnest != k) {
           routes[eb[thinnest]] = Edge_route();
           m_near_singular.push_back(r);
+          closing = eb[thinnest];
+          // The closing rule relies on an exact cancellation of terms of about 1/delta, so
+          // every other link at r must hold exactly too: an end degenerate only up to
+          // rounding (its edge-point term, about delta times a value, dropped) would have
+          // that term multiplied by 1/delta (measured: errors of 5e-3 on a grid jittered by
+          // 1e-14). Such an end is linked with its edge point, as a thin end, unless that
+          // closed a dependency cycle.
+          for (std::size_t i = 0; i < k; ++i) {
+            Edge_route& route = routes[eb[i]];
+            if (route.kind == End_route::DEGENERATE && !std::isinf(route.regular_weight) &&
+                allow_thin[eb[i]])
+              route.kind = End_route::THIN;
+          }
         }
       }
       // Start after an unlinked position, so that paths are not cut in two.
@@ -854,7 +906,7 @@ private:
         const std::size_t before = (i + k - 1) % k, after = i % k;
         const Point_2& p_before = m_domain.point(nb[(i + k - 1) % k]);
         const Point_2& p_after = m_domain.point(nb[(i + 1) % (boundary ? k + 1 : k)]);
-        Link link{e, before, after, FT(0), FT(0), FT(0), false};
+        Link link{e, i % k, before, after, FT(0), FT(0), FT(0), false};
         if (route.kind == End_route::DEGENERATE) {
           // r = (1-t) p_before + t p_after (t by projection: exact when r is on the segment,
           // the nearest point of the segment for a frame collinear up to rounding)
@@ -917,6 +969,7 @@ private:
           thin_edge_of_rule.push_back(link.with_edge_point ? link.edge : Domain::null_index);
           inner_dependent[3 * std::size_t(fb[solved]) +
                           std::size_t(position_in_face(fb[solved], r))] = 1;
+          emitted.push_back({link.position, solve_before});
         };
         // Away from the root: backwards from rho - 1, forwards from rho.
         for (std::size_t j = best_root; j-- > 0;)
@@ -934,6 +987,8 @@ private:
           emit_path();
       }
       emit_path();
+      if (closing != Domain::null_index)
+        m_closing.push_back({closing, r, closing_combination(r, closing, emitted, routes)});
     }
     for (Index f = 0; f < F; ++f)
       for (int i = 0; i < 3; ++i)
@@ -959,6 +1014,10 @@ private:
         const Index r = ends[std::size_t(side)], s = ends[std::size_t(1 - side)];
         if (routes[e].end == r)
           continue;
+        if (const auto closing = closing_of(e, r)) {
+          add_wide_rule(edge_middle_slot(e, r), *closing, thin_edge_of_rule);
+          continue;
+        }
         add_rule(edge_middle_slot(e, r),
                  {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
                  barycentric(m_domain.point(s), pl, m_domain.point(r), pr));
@@ -985,8 +1044,9 @@ private:
       thin_edge_of_rule.push_back(Domain::null_index);
       Degenerate_frame frame{e, r, m_domain.opposite_vertex(ef[0], e),
                              m_domain.opposite_vertex(ef[1], e), false};
-      frame.numerical = route.kind == End_route::DEGENERATE && !std::isinf(route.regular_weight);
-      frame.thin = route.kind == End_route::THIN;
+      frame.numerical = !std::isinf(route.regular_weight) &&
+                        route.regular_weight == (std::numeric_limits<double>::max)();
+      frame.thin = route.kind == End_route::THIN && !frame.numerical;
       frame.regular_weight = route.regular_weight;
       m_frames.push_back(frame);
     }
@@ -1014,6 +1074,186 @@ private:
           {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
           left_free ? right_from_left : left_from_right);
       thin_edge_of_rule.push_back(Domain::null_index);
+    }
+  }
+
+  // The closing link of a near-singular vertex r (its edge `closing`, the one link left
+  // regular): the edge-middle point next to r, solved from its corner diamond, would take
+  // weights of about 1/delta (delta the sine of the angle by which r misses being singular).
+  // Substituting the path's rules for the two corner-inner points and the frame's for the
+  // star writes it directly in the free data: the three prescribed points of r's corner
+  // region, the free corner-inner point (whose coefficient vanishes: around r the product of
+  // the link ratios is (-1)^k, benchmark/near_singular_cycle.py) and the edge-middle points
+  // of the other links. The 1/delta terms cancel, leaving coefficients of about 10. The
+  // cancellation is computed exactly (in FT if it is exact, else in rationals from the
+  // points' doubles, rounded once at the end), so the double build gets the correctly
+  // rounded coefficients and the exact build the very value of the regular rule.
+  std::vector<std::pair<Slot, FT>>
+  closing_combination(Index r, Index closing, const std::vector<Emitted_link>& chain,
+                      const std::vector<Edge_route>& routes) const {
+    if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value)
+      return closing_combination_in<FT>(r, closing, chain, routes);
+    else
+      return closing_combination_in<CGAL::Exact_rational>(r, closing, chain, routes);
+  }
+
+  template <class T>
+  std::vector<std::pair<Slot, FT>>
+  closing_combination_in(Index r, Index closing, const std::vector<Emitted_link>& chain,
+                         const std::vector<Edge_route>& routes) const {
+    using Point = std::array<T, 2>;
+    using Combination = std::vector<std::pair<Slot, T>>;
+    auto point = [&](Index v) -> Point {
+      const Point_2& p = m_domain.point(v);
+      if constexpr (std::is_same_v<T, FT>)
+        return {{p.x(), p.y()}};
+      else
+        return {{T(CGAL::to_double(p.x())), T(CGAL::to_double(p.y()))}};
+    };
+    auto barycentric_of = [](const Point& x, const Point& a, const Point& b, const Point& c) {
+      return internal::barycentric_of_coordinates(x, a, b, c);
+    };
+    auto add = [](Combination& to, const T& scale, const Combination& from) {
+      for (const auto& [slot, c] : from) {
+        const auto at = std::find_if(to.begin(), to.end(),
+                                     [&, slot = slot](const auto& x) { return x.first == slot; });
+        if (at == to.end())
+          to.emplace_back(slot, scale * c);
+        else
+          at->second = at->second + scale * c;
+      }
+    };
+    const auto [fb, fe] = m_domain.star_faces(r);
+    const auto [eb, ee] = m_domain.star_edges(r);
+    const auto [nb, ne] = m_domain.neighbours(r);
+    const std::size_t k = static_cast<std::size_t>(fe - fb);
+    auto face_position = [&](Index f) {
+      return static_cast<std::size_t>(std::find(fb, fe, f) - fb);
+    };
+    // The star points of r in its frame (step 1).
+    const std::array<std::size_t, 3> frame = choose_frame(r);
+    auto region_slot = [&](std::size_t j) {
+      return j == 0 ? vertex_slot(r) : star_slot(eb[j - 1], r);
+    };
+    auto region_point = [&](std::size_t j) { return j == 0 ? point(r) : point(nb[j - 1]); };
+    auto star = [&](std::size_t i) {
+      const std::size_t j = 1 + i;
+      if (j == frame[0] || j == frame[1] || j == frame[2])
+        return Combination{{region_slot(j), T(1)}};
+      const auto w = barycentric_of(region_point(j), region_point(frame[0]), region_point(frame[1]),
+                                    region_point(frame[2]));
+      return Combination{{region_slot(frame[0]), w[0]},
+                         {region_slot(frame[1]), w[1]},
+                         {region_slot(frame[2]), w[2]}};
+    };
+    // The corner-inner points along the path (step 2's links, in the order they were solved),
+    // starting from the free one.
+    std::vector<Combination> inner(k);
+    std::vector<char> solved(k, 0);
+    for (const Emitted_link& link : chain)
+      solved[link.solve_before ? (link.position + k - 1) % k : link.position] = 1;
+    for (std::size_t f = 0; f < k; ++f)
+      if (!solved[f])
+        inner[f] = {{corner_inner_slot(fb[f], r), T(1)}};
+    for (const Emitted_link& link : chain) {
+      const std::size_t i = link.position, before = (i + k - 1) % k, after = i;
+      const Index e = eb[i];
+      T mu_before, mu_after, mu_edge(0);
+      if (routes[e].kind == End_route::DEGENERATE) {
+        const Point pb = point(nb[(i + k - 1) % k]), pa = point(nb[(i + 1) % k]), pr = point(r);
+        const T dx = pa[0] - pb[0], dy = pa[1] - pb[1];
+        const T t = ((pr[0] - pb[0]) * dx + (pr[1] - pb[1]) * dy) / (dx * dx + dy * dy);
+        mu_before = T(1) - t;
+        mu_after = t;
+      } else {
+        const auto& ef = m_domain.edge_faces(e);
+        const auto& ends = m_domain.edge(e);
+        const auto mu = barycentric_of(point(r), point(m_domain.opposite_vertex(ef[0], e)),
+                                       point(ends[0] == r ? ends[1] : ends[0]),
+                                       point(m_domain.opposite_vertex(ef[1], e)));
+        const bool left_before = ef[0] == fb[before];
+        mu_before = left_before ? mu[0] : mu[2];
+        mu_after = left_before ? mu[2] : mu[0];
+        mu_edge = mu[1];
+      }
+      const std::size_t target = link.solve_before ? before : after;
+      const std::size_t other = link.solve_before ? after : before;
+      const T& mu_solved = link.solve_before ? mu_before : mu_after;
+      const T& mu_other = link.solve_before ? mu_after : mu_before;
+      Combination c = star(i);
+      for (auto& [slot, x] : c)
+        x = x / mu_solved;
+      add(c, -mu_other / mu_solved, inner[other]);
+      if (!CGAL::is_zero(mu_edge))
+        add(c, -mu_edge / mu_solved, Combination{{edge_middle_slot(e, r), T(1)}});
+      inner[target] = std::move(c);
+    }
+    // The closing edge's corner diamond at r (step 3's regular rule), with the above
+    // substituted.
+    const auto& ef = m_domain.edge_faces(closing);
+    const auto& ends = m_domain.edge(closing);
+    const auto w = barycentric_of(point(ends[0] == r ? ends[1] : ends[0]),
+                                  point(m_domain.opposite_vertex(ef[0], closing)), point(r),
+                                  point(m_domain.opposite_vertex(ef[1], closing)));
+    Combination result;
+    add(result, w[0], inner[face_position(ef[0])]);
+    add(result, w[1], star(static_cast<std::size_t>(std::find(eb, ee, closing) - eb)));
+    add(result, w[2], inner[face_position(ef[1])]);
+    std::vector<std::pair<Slot, FT>> out;
+    for (const auto& [slot, c] : result)
+      if (!CGAL::is_zero(c)) {
+        if constexpr (std::is_same_v<T, FT>)
+          out.emplace_back(slot, c);
+        else
+          out.emplace_back(slot, FT(CGAL::to_double(c)));
+      }
+    std::sort(out.begin(), out.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    return out;
+  }
+
+  // The combination replacing the regular rule of end r of edge e, if (e, r) is the closing
+  // link of a near-singular vertex.
+  const std::vector<std::pair<Slot, FT>>* closing_of(Index e, Index r) const {
+    for (const Closing& c : m_closing)
+      if (c.edge == e && c.vertex == r)
+        return &c.combination;
+    return nullptr;
+  }
+
+  // target = the combination, as a chain of rules of at most three sources: auxiliary slots
+  // (after the control points) hold the partial sums.
+  void add_wide_rule(Slot target, const std::vector<std::pair<Slot, FT>>& combination,
+                     std::vector<Index>& thin_edge_of_rule) {
+    std::size_t next = 0;
+    Slot sum = null_slot; // the partial sum so far
+    while (next < combination.size()) {
+      std::array<Slot, 3> sources{{null_slot, null_slot, null_slot}};
+      std::array<FT, 3> weights{{FT(0), FT(0), FT(0)}};
+      std::size_t used = 0;
+      if (sum != null_slot) {
+        sources[0] = sum;
+        weights[0] = FT(1);
+        used = 1;
+      }
+      while (used < 3 && next < combination.size()) {
+        sources[used] = combination[next].first;
+        weights[used] = combination[next].second;
+        ++used, ++next;
+      }
+      if (used == 1) { // a single source: a rule needs two
+        sources[1] = sources[0];
+        weights[1] = FT(0);
+      }
+      const bool last = next == combination.size();
+      const Slot to = last ? target : static_cast<Slot>(m_values.size());
+      if (!last) {
+        m_values.push_back(zero());
+        m_free.push_back(0);
+      }
+      add_rule(to, sources, weights);
+      thin_edge_of_rule.push_back(Domain::null_index);
+      sum = to;
     }
   }
 
@@ -1152,6 +1392,7 @@ private:
 
   Domain m_domain;
   Corner_frame m_frame;
+  std::size_t m_control_slots = 0; // V + 4E + 6F; auxiliary slots follow in m_values
   std::vector<Value> m_values;
   std::vector<char> m_free;
   std::vector<Slot> m_free_slots;
@@ -1161,6 +1402,11 @@ private:
   double m_max_weight = 0;
   int m_plan_rounds = 0; // plan builds: 1 + the rebuilds that broke dependency cycles
   std::vector<Index> m_near_singular;
+  struct Closing {
+    Index edge, vertex;
+    std::vector<std::pair<Slot, FT>> combination;
+  };
+  std::vector<Closing> m_closing; // the closing links of the near-singular vertices
   std::vector<std::size_t> m_dependent_offsets;
   std::vector<std::uint32_t> m_dependents;
   std::vector<char> m_queued;

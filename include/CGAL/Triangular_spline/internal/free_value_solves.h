@@ -53,7 +53,7 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   using Traits = Value_traits<Value>;
   constexpr int D = Traits::dimension;
-  const std::size_t n = spline.number_of_slots();
+  const std::size_t n = spline.values().size(); // control points and auxiliary slots
   const std::size_t V = spline.domain().number_of_vertices();
   Affine_slots<Value> a;
   a.column.assign(n, -1);

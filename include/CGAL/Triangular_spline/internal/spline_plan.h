@@ -67,6 +67,19 @@ std::uint32_t quintic_slot(const Domain& d, typename Domain::Index f, const Mult
   return 0;
 }
 
+// Barycentric coordinates (lambda, mu, nu) of x with respect to (a, b, c), points given as
+// coordinate pairs of one number type, computed as written (no filtering).
+template <class Coordinates>
+auto barycentric_of_coordinates(const Coordinates& x, const Coordinates& a, const Coordinates& b,
+                                const Coordinates& c) {
+  using T = std::decay_t<decltype(x[0])>;
+  const T d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  const T mu = ((x[0] - a[0]) * (c[1] - a[1]) - (x[1] - a[1]) * (c[0] - a[0])) / d;
+  const T nu = ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / d;
+  const T lambda = T(1) - mu - nu;
+  return std::array<T, 3>{{lambda, mu, nu}};
+}
+
 // Barycentric coordinates of x with respect to (a, b, c), which the exact predicates have
 // found non-collinear. With an inexact number type a nearly collinear frame can round its
 // determinant to zero (or to the wrong size): below the error bound the weights are
@@ -76,12 +89,7 @@ template <class Point_2>
 auto barycentric_weights(const Point_2& x, const Point_2& a, const Point_2& b, const Point_2& c) {
   using FT = std::decay_t<decltype(x.x())>;
   auto compute = [](const auto& x, const auto& a, const auto& b, const auto& c) {
-    using T = std::decay_t<decltype(x[0])>;
-    const T d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    const T mu = ((x[0] - a[0]) * (c[1] - a[1]) - (x[1] - a[1]) * (c[0] - a[0])) / d;
-    const T nu = ((b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0])) / d;
-    const T lambda = T(1) - mu - nu;
-    return std::array<T, 3>{{lambda, mu, nu}};
+    return barycentric_of_coordinates(x, a, b, c);
   };
   auto coords = [](const Point_2& p) { return std::array<FT, 2>{{p.x(), p.y()}}; };
   if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
