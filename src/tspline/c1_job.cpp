@@ -271,18 +271,26 @@ Json run(const C1_job& job, std::ostream& out) {
   memory["certify"] = peak_memory_mb();
 
   std::optional<long long> morgan_scott = TS::morgan_scott_dimension(d);
-  // The dimension from the rank of the C^1 conditions modulo a prime: an upper bound, which
-  // proves the dimension when it meets the scheme's free count (a lower bound). The rational
-  // rank (exact_spline_dimension()) takes minutes from 50 scattered points on.
-  std::optional<TS::Dimension_bound> dimension_bound;
+  // The dimension, proven by two bounds: the exact plan's rules imply every C^1 condition
+  // (checked exactly: dim >= its free count), and the rank of the C^1 conditions modulo a
+  // prime (dim <= slots - rank). Only when several primes disagree is the rational rank
+  // computed, which takes minutes from 50 scattered points on: said before it starts.
+  std::optional<TS::Dimension_certificate> dimension;
   if (job.dimension) {
-    progress("c1", "computing the rank of the C^1 conditions", large);
-    dimension_bound = TS::spline_dimension_upper_bound(d);
+    // About 3 CPU seconds per 10^4 points.
+    progress("c1", "proving the dimension (exact plan check, rank modulo a prime)",
+             d.number_of_vertices() > 5000);
+    dimension = TS::spline_dimension(d, false);
+    if (!dimension->dimension) {
+      std::cerr << "tspline c1: note: the rank modulo " << dimension->primes_tried
+                << " primes does not meet the free count; computing the exact rational rank "
+                   "(minutes from 50 scattered points on)\n";
+      dimension = TS::spline_dimension(d, true);
+    }
     timings["dimension"] = clock.lap();
     memory["dimension"] = peak_memory_mb();
   }
-  const bool dimension_proven =
-      dimension_bound && dimension_bound->upper_bound == spline.number_of_free_parameters();
+  const bool dimension_proven = dimension && dimension->dimension;
 
   // Honesty about the surface: does it go through the data, and does it stay in the data's
   // range? The sampled range (vertices and face centroids) is a lower bound of the surface's
@@ -424,9 +432,17 @@ Json run(const C1_job& job, std::ostream& out) {
   report["free_parameters"] = spline.number_of_free_parameters();
   report["free_parameters_formula"] = "3V + 3F + E_I + 3E_B + sigma";
   report["dimension_morgan_scott"] = morgan_scott ? Json(*morgan_scott) : Json();
-  report["dimension"] = dimension_proven ? Json(spline.number_of_free_parameters()) : Json();
-  report["dimension_upper_bound"] = dimension_bound ? Json(dimension_bound->upper_bound) : Json();
-  report["dimension_rank_prime"] = dimension_bound ? Json(dimension_bound->prime) : Json();
+  report["dimension"] = dimension_proven ? Json(*dimension->dimension) : Json();
+  report["dimension_upper_bound"] = dimension ? Json(dimension->upper_bound) : Json();
+  report["dimension_rank_prime"] =
+      dimension && !dimension->rational_rank ? Json(dimension->prime) : Json();
+  report["dimension_primes_tried"] = dimension ? Json(dimension->primes_tried) : Json();
+  report["dimension_lower_bound_proven"] = dimension ? Json(dimension->lower_bound_proven) : Json();
+  // Which argument proved it: the two bounds meeting, or the exact rational rank.
+  report["dimension_argument"] =
+      !dimension_proven          ? Json()
+      : dimension->rational_rank ? Json("exact rational rank")
+                                 : Json("plan rules imply the C^1 conditions (exact) + rank mod p");
   report["singular_vertices"] = spline.singular_vertices().size();
   report["degenerate_frames"] =
       job.fix == "perturb" ? original_frames.frames.size() : spline.degenerate_frames().size();
@@ -559,14 +575,18 @@ Json run(const C1_job& job, std::ostream& out) {
         << "  free parameters: " << spline.number_of_free_parameters();
     if (morgan_scott)
       out << " (Morgan-Scott dimension " << *morgan_scott << ")";
-    if (dimension_proven)
-      out << " (dimension " << dimension_bound->upper_bound
-          << " proven: the rank of the C^1 conditions mod " << dimension_bound->prime
-          << " bounds it from above)";
-    else if (dimension_bound)
-      out << " (dimension between " << spline.number_of_free_parameters() << " and "
-          << dimension_bound->upper_bound << ": rank of the C^1 conditions mod "
-          << dimension_bound->prime << ")";
+    if (dimension_proven && dimension->rational_rank)
+      out << " (dimension " << *dimension->dimension
+          << " proven: the exact rank of the C^1 conditions over the rationals)";
+    else if (dimension_proven)
+      out << " (dimension " << *dimension->dimension
+          << " proven: the rank of the C^1 conditions mod " << dimension->prime
+          << " bounds it from above, the plan's rules imply every C^1 condition exactly)";
+    else if (dimension)
+      out << " (dimension at most " << dimension->upper_bound << ": rank of the C^1 conditions mod "
+          << dimension->prime << "; lower bound "
+          << (dimension->lower_bound_proven ? "proven" : "NOT proven: the plan check failed")
+          << ")";
     out << "\n  fit: " << job.fit << ", arithmetic: " << (job.exact ? "exact rationals" : "double")
         << ", largest interpolation error: " << interpolation_error << "\n";
     if (job.gradients)

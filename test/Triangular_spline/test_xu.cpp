@@ -2218,3 +2218,166 @@ TEST(Adaptive, WindowedEnergyPartEqualsTheDirectOne) {
   EXPECT_GE(solved.windows, 6u);
   EXPECT_LT(largest_difference(windowed.values(), direct.values()), 1e-7);
 }
+
+// ---------------------------------------------------------------------------------------
+// Issue 12: the dimension proven by the plan check (lower bound) and a modular rank (upper
+// bound), and the fast exact certificate.
+
+namespace {
+
+// A C1_quintic_spline's plan with one rule changed, for internal::check_plan_implies_c1().
+template <class Spline>
+struct Edited_plan {
+  using FT = typename Spline::FT;
+  using Slot = typename Spline::Slot;
+  const Spline& spline;
+  std::vector<typename Spline::Rule> edited;
+  std::size_t number_of_slots() const { return spline.number_of_slots(); }
+  const std::vector<typename Spline::Rule>& rules() const { return edited; }
+  bool is_free(std::size_t s) const { return spline.is_free(Slot(s)); }
+  const auto& domain() const { return spline.domain(); }
+};
+
+} // namespace
+
+// The modular dimension equals the exact rational rank on small domains with singular and
+// degree-4 vertices, a hole and boundaries, proven by the first prime with the plan check.
+TEST(Dimension, ProvenByThePlanAndOnePrimeEqualsTheRationalRank) {
+  using K = Exact_kernel;
+  for (const auto& [name, domain] : all_domains<K>()) {
+    for (const Planar_domain<K>& d : {domain, [&] {
+                                        std::vector<TS::Vertex_move<K::Point_2, Index>> moves;
+                                        return TS::perturb_degenerate_vertices(domain, moves);
+                                      }()}) {
+      const TS::Dimension_certificate c = TS::spline_dimension(d);
+      EXPECT_TRUE(c.lower_bound_proven) << name;
+      EXPECT_EQ(c.free_parameters, C1_quintic_spline<K>(d).number_of_free_parameters()) << name;
+      ASSERT_TRUE(c.dimension.has_value()) << name;
+      EXPECT_EQ(*c.dimension, TS::exact_spline_dimension(d)) << name;
+      EXPECT_EQ(c.upper_bound, *c.dimension) << name;
+      EXPECT_FALSE(c.rational_rank) << name;
+      EXPECT_EQ(c.primes_tried, 1u) << name;
+      EXPECT_EQ(c.prime, 2147483629u) << name;
+    }
+  }
+  // A double domain is converted exactly (its dyadic rationals make the rational rank slow:
+  // compared with the plan's count instead).
+  const Planar_domain<Epick> fast = random_delaunay<Epick>(40, 7);
+  const TS::Dimension_certificate c = TS::spline_dimension(fast);
+  EXPECT_TRUE(c.lower_bound_proven);
+  EXPECT_EQ(c.dimension,
+            std::optional<std::size_t>(C1_quintic_spline<Epick>(fast).number_of_free_parameters()));
+}
+
+// The plan check is a check: a weight off by one unit in its denominator, or a rule dropped,
+// fails it.
+TEST(Dimension, PlanCheckFailsForAWrongWeightOrAMissingRule) {
+  using K = Exact_kernel;
+  const C1_quintic_spline<K> spline(all_domains<K>()[3].second); // criss-cross: singular
+  const auto good = TS::internal::check_plan_implies_c1(spline);
+  EXPECT_TRUE(good.valid);
+  EXPECT_TRUE(good.implies_c1);
+  EXPECT_EQ(good.failed, 0u);
+  EXPECT_EQ(good.conditions, 5 * spline.domain().number_of_interior_edges());
+  std::size_t caught = 0, tried = 0;
+  for (std::size_t r = 0; r < spline.rules().size(); r += 7) {
+    Edited_plan<C1_quintic_spline<K>> plan{spline, spline.rules()};
+    auto& w = plan.edited[r].weights[0];
+    const K::FT num = w.get_num(), den = w.get_den();
+    w = num / (den + 1);
+    if (w == spline.rules()[r].weights[0])
+      continue; // a zero weight stays zero
+    ++tried;
+    const auto check = TS::internal::check_plan_implies_c1(plan);
+    EXPECT_TRUE(check.valid);
+    caught += check.implies_c1 ? 0 : 1;
+  }
+  EXPECT_GT(tried, 10u);
+  EXPECT_EQ(caught, tried);
+  Edited_plan<C1_quintic_spline<K>> missing{spline, spline.rules()};
+  missing.edited.pop_back();
+  EXPECT_FALSE(TS::internal::check_plan_implies_c1(missing).valid);
+}
+
+// The fast exact certificate (slots, unreduced fractions) and check_C1_join() on the patches
+// agree edge by edge, on C^1 splines and after one control value moves by one unit in its
+// denominator or by one double ulp; such an edit is always caught.
+TEST(Certificate, FastExactVerdictsAgreeWithTheFullCheckEdgeByEdge) {
+  using K = Exact_kernel;
+  Random_rationals random(41);
+  auto agree = [](const C1_quintic_spline<K>& spline, const TS::Continuity_certificate& c,
+                  const std::string& name) {
+    const auto& d = spline.domain();
+    for (const TS::Edge_certificate& e : c.edges) {
+      const auto& ef = d.edge_faces(e.edge);
+      const TS::Join_report full = TS::check_C1_join(spline.patch(ef[0]), spline.patch(ef[1]));
+      EXPECT_EQ(e.holds, full.holds) << name << " edge " << e.edge;
+      EXPECT_EQ(e.achieved_order, full.achieved_order) << name << " edge " << e.edge;
+      EXPECT_EQ(e.residual, full.max_residual) << name << " edge " << e.edge;
+    }
+  };
+  for (const auto& [name, domain] : all_domains<K>()) {
+    C1_quintic_spline<K> spline(domain);
+    randomize(spline, random);
+    const TS::Continuity_certificate proof = TS::certify_continuity(spline, 1);
+    EXPECT_EQ(proof.verdict, TS::Certificate_verdict::PROOF) << name;
+    agree(spline, proof, name);
+    // The slots some C^1 condition reads: an edit of any of them must be caught.
+    std::set<std::uint32_t> read;
+    TS::internal::for_each_c1_condition(spline.domain(), [&](const auto& row) {
+      for (const auto& entry : row)
+        read.insert(entry.first);
+    });
+    std::size_t edits = 0;
+    for (std::size_t i = 0; i < spline.free_slots().size(); i += 5) {
+      const auto s = spline.free_slots()[i];
+      const K::FT v = spline.value(s);
+      const std::array<K::FT, 2> edits_of_v{
+          {K::FT(K::FT(v.get_num()) / K::FT(v.get_den() + 1)),
+           K::FT(v + K::FT(std::nextafter(CGAL::to_double(v), 1e300) - CGAL::to_double(v)))}};
+      for (const K::FT& edited : edits_of_v) {
+        C1_quintic_spline<K> copy = spline;
+        copy.set_free_value(s, edited); // not propagated: its dependents are stale
+        const TS::Continuity_certificate c = TS::certify_continuity(copy, 1);
+        if (edited == v || !read.count(s)) {
+          EXPECT_EQ(c.verdict, TS::Certificate_verdict::PROOF) << name;
+          continue;
+        }
+        ++edits;
+        EXPECT_EQ(c.verdict, TS::Certificate_verdict::FAILED) << name << " slot " << s;
+        agree(copy, c, name);
+      }
+    }
+    EXPECT_GT(edits, 10u) << name;
+  }
+}
+
+// The unreduced-fraction zero test equals the rational one.
+TEST(Certificate, ExactZeroSumEqualsRationalArithmetic) {
+  using FT = Exact_kernel::FT;
+  Random_rationals random(5);
+  for (int trial = 0; trial < 2000; ++trial) {
+    TS::internal::Exact_zero_sum<FT> sum;
+    sum.clear();
+    FT reference = 0;
+    const int n = random.integer(1, 4);
+    std::vector<std::pair<FT, FT>> terms;
+    for (int k = 0; k < n; ++k)
+      terms.emplace_back(random.rational<FT>(3, 4), random.rational<FT>(3, 4));
+    if (trial % 2 == 0) // make it vanish: the last term cancels the others
+      terms.emplace_back(FT(1), [&] {
+        FT s = 0;
+        for (const auto& [c, x] : terms)
+          s -= c * x;
+        return s;
+      }());
+    for (std::size_t k = 0; k < terms.size(); ++k) {
+      if (k % 2)
+        sum.subtract(-terms[k].first, terms[k].second);
+      else
+        sum.add(terms[k].first, terms[k].second);
+      reference += terms[k].first * terms[k].second;
+    }
+    EXPECT_EQ(sum.is_zero(), CGAL::is_zero(reference)) << trial;
+  }
+}

@@ -7,6 +7,7 @@
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/continuity.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/exact_join.h>
 #include <CGAL/Triangular_spline/internal/named_parameters.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 
@@ -158,20 +159,46 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
   for (Index e = 0; e < domain.number_of_edges(); ++e)
     if (!domain.is_boundary_edge(e))
       interior.push_back(e);
-  // The edges are independent: checked on all cores in double (exact checks allocate, and
-  // exact networks are small), the verdicts collected in edge order.
+  // Exact slot networks of degree 5 (C1_quintic_spline) with heights: C^1 is decided on the
+  // slots by internal::fast_exact_C1_join(), an exact test without patches or gcds; only an
+  // edge it does not find exactly zero goes through check_C1_join() for its residuals.
+  using Network = TriangularSplineNetwork;
+  constexpr bool fast_exact = [] {
+    if constexpr (internal::has_slot_values<Network>::value) {
+      using FT = typename Geom_traits::FT;
+      return CGAL::Algebraic_structure_traits<FT>::Is_exact::value &&
+             std::is_same_v<std::decay_t<decltype(std::declval<const Network&>().value(0u))>, FT>;
+    } else {
+      return false;
+    }
+  }();
+  bool use_fast = false;
+  if constexpr (fast_exact)
+    use_fast = k == 1 && conditions == Join_conditions::EXTENSION && network.degree() == 5;
+  // The edges are independent: checked on all cores (exact checks only on the fast path, the
+  // others allocate), the verdicts collected in edge order.
   certificate.edges.resize(interior.size());
   internal::parallel_for_index(
-      interior.size(), certificate.exact ? 1 : internal::thread_count(interior.size(), 20000),
+      interior.size(),
+      certificate.exact && !use_fast ? 1 : internal::thread_count(interior.size(), 20000),
       [&](std::size_t i) {
         const Index e = interior[i];
         const auto& ef = domain.edge_faces(e);
+        Edge_certificate& c = certificate.edges[i];
+        if constexpr (fast_exact) {
+          if (use_fast && internal::fast_exact_C1_join(network, e) == internal::Fast_join::ZERO) {
+            c.edge = e;
+            c.vertices = {{domain.edge(e)[0], domain.edge(e)[1]}};
+            c.achieved_order = 1;
+            c.holds = c.zero = true;
+            return;
+          }
+        }
         const Join_report report =
             k == 1 && conditions == Join_conditions::EXTENSION
                 ? check_C1_join(network.patch(ef[0]), network.patch(ef[1]), certificate.tolerance)
                 : check_join(network.patch(ef[0]), network.patch(ef[1]), k, conditions,
                              certificate.tolerance);
-        Edge_certificate& c = certificate.edges[i];
         c.edge = e;
         c.vertices = {{domain.edge(e)[0], domain.edge(e)[1]}};
         c.achieved_order = report.achieved_order;

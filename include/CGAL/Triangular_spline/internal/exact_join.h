@@ -1,0 +1,161 @@
+// Copyright (c) 2026 Triangular_spline contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TRIANGULAR_SPLINE_INTERNAL_EXACT_JOIN_H
+#define CGAL_TRIANGULAR_SPLINE_INTERNAL_EXACT_JOIN_H
+
+// The fast exact C^1 check of certify_continuity() for splines that store their control
+// values in shared slots (C1_quintic_spline): Xu's conditions read on the slots of the two
+// faces, no patch built, and each condition decided by an exact zero test.
+//
+// Why no interval filter decides here: a join condition holds iff an affine combination of
+// control values is exactly zero, and an interval can only show that it is not (a failure).
+// For a spline that is C^1 every condition needs the exact test, so that test itself is made
+// cheap: the condition is multiplied by its common denominator without ever reducing a
+// fraction (GMP's gcd was about half of the exact build's time), and the scratch integers are
+// kept per thread, so a condition allocates nothing once they have grown.
+
+#include <CGAL/Triangular_spline/Multi_index.h>
+
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#if __has_include(<gmpxx.h>)
+#include <gmpxx.h>
+#define CGAL_TRIANGULAR_SPLINE_HAS_GMPXX 1
+#endif
+
+namespace CGAL {
+namespace Triangular_spline {
+namespace internal {
+
+// Decides sum_k c_k x_k == 0 exactly for terms added one by one. The generic version uses the
+// number type's own arithmetic.
+template <class FT>
+class Exact_zero_sum {
+public:
+  void clear() { m_sum = FT(0); }
+  void add(const FT& c, const FT& x) { m_sum += c * x; }
+  void subtract(const FT& c, const FT& x) { m_sum -= c * x; }
+  bool is_zero() const { return CGAL::is_zero(m_sum); }
+
+private:
+  FT m_sum = FT(0);
+};
+
+#ifdef CGAL_TRIANGULAR_SPLINE_HAS_GMPXX
+// GMP rationals: the sum is kept as an unreduced fraction num/den (den > 0); each product
+// c x = (c.num x.num) / (c.den x.den) is added by cross-multiplication, or directly when the
+// denominators agree. Multiplications only, no gcd: the value is the same fraction, so the
+// numerator is zero iff the sum is.
+template <>
+class Exact_zero_sum<mpq_class> {
+public:
+  void clear() { m_empty = true; }
+  void add(const mpq_class& c, const mpq_class& x) { add(c, x, false); }
+  void subtract(const mpq_class& c, const mpq_class& x) { add(c, x, true); }
+  bool is_zero() const { return m_empty || mpz_sgn(m_num.get_mpz_t()) == 0; }
+
+private:
+  void add(const mpq_class& c, const mpq_class& x, bool negate) {
+    mpz_mul(m_t.get_mpz_t(), mpq_numref(c.get_mpq_t()), mpq_numref(x.get_mpq_t()));
+    if (mpz_sgn(m_t.get_mpz_t()) == 0)
+      return;
+    if (negate)
+      mpz_neg(m_t.get_mpz_t(), m_t.get_mpz_t());
+    mpz_mul(m_d.get_mpz_t(), mpq_denref(c.get_mpq_t()), mpq_denref(x.get_mpq_t()));
+    if (m_empty) {
+      mpz_swap(m_num.get_mpz_t(), m_t.get_mpz_t());
+      mpz_swap(m_den.get_mpz_t(), m_d.get_mpz_t());
+      m_empty = false;
+    } else if (mpz_cmp(m_den.get_mpz_t(), m_d.get_mpz_t()) == 0) {
+      mpz_add(m_num.get_mpz_t(), m_num.get_mpz_t(), m_t.get_mpz_t());
+    } else {
+      // num/den + t/d = (num d + t den) / (den d)
+      mpz_mul(m_num.get_mpz_t(), m_num.get_mpz_t(), m_d.get_mpz_t());
+      mpz_addmul(m_num.get_mpz_t(), m_t.get_mpz_t(), m_den.get_mpz_t());
+      mpz_mul(m_den.get_mpz_t(), m_den.get_mpz_t(), m_d.get_mpz_t());
+    }
+  }
+  bool m_empty = true;
+  mpz_class m_num, m_den, m_t, m_d;
+};
+#endif
+
+// Whether `Network` stores its control values in slots: value(slot(f, index)), read by
+// reference (C1_quintic_spline).
+template <class Network, class = void>
+struct has_slot_values : std::false_type {};
+template <class Network>
+struct has_slot_values<Network, std::void_t<decltype(std::declval<const Network&>().value(
+                                    std::declval<const Network&>().slot(0u, Multi_index())))>>
+    : std::true_type {};
+
+// The outcome of the fast check of one interior edge.
+enum class Fast_join { ZERO, NOT_ZERO, UNDECIDED };
+
+// Checks Xu's C^0 conditions (3.4) and C^1 conditions (3.5) across interior edge `e` of
+// `network`, a slot network of degree 5 with values of its number type FT, exactly:
+// q = (W_p p + W_r r + W_s s) / D with the 2x2 determinants W and D, and each condition is
+// tested as D b_q - W_p a_p - W_r a_r - W_s a_s == 0. ZERO: every condition is exactly zero
+// (a proof); otherwise the caller runs the full check for the residuals (UNDECIDED when the
+// triangles do not lie on opposite sides of the edge: the full check reports that).
+template <class Network, class Index>
+Fast_join fast_exact_C1_join(const Network& network, Index e) {
+  using FT = typename Network::FT;
+  const auto& domain = network.domain();
+  const auto& ef = domain.edge_faces(e);
+  const Index A = ef[0], B = ef[1];
+  const Index p = domain.opposite_vertex(A, e), q = domain.opposite_vertex(B, e);
+  const Index r = domain.edge(e)[0], s = domain.edge(e)[1];
+  constexpr int m = 5;
+  // The slot of the control point of face f with g copies of apex, i of r, m-g-i of s.
+  auto slot = [&](Index f, Index apex, int g, int i) {
+    const auto& t = domain.face(f);
+    Multi_index index;
+    for (int c = 0; c < 3; ++c)
+      index[c] = t[std::size_t(c)] == apex ? g : (t[std::size_t(c)] == r ? i : m - g - i);
+    return network.slot(f, index);
+  };
+  // (3.4): the edge's points are shared slots, equal by construction; compared otherwise.
+  for (int i = 0; i <= m; ++i) {
+    const auto a = slot(A, p, 0, i), b = slot(B, q, 0, i);
+    if (a != b && !(network.value(a) == network.value(b)))
+      return Fast_join::NOT_ZERO;
+  }
+  const auto& P = domain.point(p);
+  const auto& Q = domain.point(q);
+  const auto& R = domain.point(r);
+  const auto& S = domain.point(s);
+  const FT rx = R.x() - P.x(), ry = R.y() - P.y();
+  const FT sx = S.x() - P.x(), sy = S.y() - P.y();
+  const FT qx = Q.x() - P.x(), qy = Q.y() - P.y();
+  const FT D = rx * sy - ry * sx;
+  const FT Wr = qx * sy - qy * sx;
+  const FT Ws = rx * qy - ry * qx;
+  const FT Wp = D - Wr - Ws;
+  // q strictly on the other side of rs than p: its coordinate at p is negative.
+  if (CGAL::sign(Wp) * CGAL::sign(D) >= 0)
+    return Fast_join::UNDECIDED;
+  thread_local Exact_zero_sum<FT> sum;
+  for (int i = 0; i <= m - 1; ++i) {
+    sum.clear();
+    sum.add(D, network.value(slot(B, q, 1, i)));
+    sum.subtract(Wp, network.value(slot(A, p, 1, i)));
+    sum.subtract(Wr, network.value(slot(A, p, 0, i + 1)));
+    sum.subtract(Ws, network.value(slot(A, p, 0, i)));
+    if (!sum.is_zero())
+      return Fast_join::NOT_ZERO;
+  }
+  return Fast_join::ZERO;
+}
+
+} // namespace internal
+} // namespace Triangular_spline
+} // namespace CGAL
+
+#endif // CGAL_TRIANGULAR_SPLINE_INTERNAL_EXACT_JOIN_H
