@@ -1192,8 +1192,9 @@ TEST(StablePropagation, NearSingularVerticesKeepEveryWeightBounded) {
         EXPECT_LE(fast.max_propagation_weight(), Fast::propagation_weight_bound);
         // The same random free values (multiples of 1/128: exact in double) in both builds.
         // (At the singular vertex two roots of the cycle of links tie; rounding picks one.)
-        if (!singular)
+        if (!singular) {
           ASSERT_EQ(fast.free_slots(), spline.free_slots());
+        }
         Random_rationals random(17);
         for (auto s : spline.free_slots()) {
           const int k = random.integer(-128, 128);
@@ -1212,11 +1213,17 @@ TEST(StablePropagation, NearSingularVerticesKeepEveryWeightBounded) {
         EXPECT_LT(largest, 1e2);
         // Rounding of a few dozen operations on values below 1e2 with weights below 16 (the
         // regular rule gives 3e-12 at 1e-2 degrees and 1e-5 at 1e-8 degrees).
-        if (!singular)
+        if (!singular) {
           EXPECT_LT(difference, 1e-12);
+        }
         EXPECT_LE(spline.propagation_amplification(), 2 * Spline::propagation_weight_bound);
         EXPECT_TRUE(certify(spline).certified);
         EXPECT_LT(certify(fast).max_residual, 1e-13);
+        // The plan check: every C^1 condition reduces to zero over the rules, auxiliary
+        // partial sums included; a prime proves the free count is the dimension.
+        const TS::Dimension_certificate dimension = TS::spline_dimension(domain);
+        EXPECT_TRUE(dimension.lower_bound_proven);
+        EXPECT_EQ(dimension.dimension, std::optional<std::size_t>(dimension.free_parameters));
         EXPECT_EQ(spline.number_of_free_parameters(),
                   3 * domain.number_of_vertices() + 3 * domain.number_of_faces() +
                       domain.number_of_interior_edges() + 3 * domain.number_of_boundary_edges() +

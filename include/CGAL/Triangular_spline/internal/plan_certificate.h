@@ -46,8 +46,12 @@ Plan_check check_plan_implies_c1(const Spline& spline) {
   using FT = typename Spline::FT;
   using Slot = typename Spline::Slot;
   Plan_check result;
-  const std::size_t slots = spline.number_of_slots();
   const auto& rules = spline.rules();
+  // The control points, and the auxiliary slots after them (partial sums of the rules of
+  // near-singular vertices), each the target of a rule.
+  std::size_t slots = spline.number_of_slots();
+  for (const auto& r : rules)
+    slots = (std::max)(slots, std::size_t(r.target) + 1);
   // position[s]: 1 + the index of the rule computing s, 0 for a free slot.
   std::vector<std::uint32_t> position(slots, 0);
   for (std::size_t i = 0; i < rules.size(); ++i) {
