@@ -5,6 +5,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace tspline {
@@ -22,6 +23,21 @@ double Stopwatch::lap() {
   const auto now = std::chrono::steady_clock::now();
   const double s = std::chrono::duration<double>(now - m_last).count();
   m_last = now;
+  return s;
+}
+
+double Cpu_stopwatch::now() {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0)
+    return 0;
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double Cpu_stopwatch::lap() {
+  const double now_seconds = now();
+  const double s = now_seconds - m_last;
+  m_last = now_seconds;
   return s;
 }
 

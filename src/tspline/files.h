@@ -19,6 +19,18 @@ private:
   std::chrono::steady_clock::time_point m_last = std::chrono::steady_clock::now();
 };
 
+// CPU seconds (user + system, every thread of the process, finished ones included) since
+// construction or since the previous lap: what a stage costs on a shared machine, where wall
+// time depends on the other jobs.
+class Cpu_stopwatch {
+public:
+  double lap();
+
+private:
+  double m_last = now();
+  static double now();
+};
+
 // The process's peak resident memory so far in MB (VmHWM of /proc/self/status); -1 where
 // the system does not say (not Linux).
 double peak_memory_mb();
