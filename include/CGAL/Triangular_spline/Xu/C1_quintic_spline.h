@@ -596,7 +596,11 @@ private:
   std::array<std::size_t, 3> choose_frame(Index v) const {
     const auto [nb, ne] = m_domain.neighbours(v);
     const std::size_t d = static_cast<std::size_t>(ne - nb);
-    auto collinear = m_domain.geom_traits().collinear_2_object();
+    // Orientation, not collinear_2: the same exact test, statically filtered by Epick.
+    auto orientation = m_domain.geom_traits().orientation_2_object();
+    auto collinear = [&](const Point_2& a, const Point_2& b, const Point_2& c) {
+      return orientation(a, b, c) == CGAL::COLLINEAR;
+    };
     auto point_of = [&](std::size_t k) -> const Point_2& {
       return k == 0 ? m_domain.point(v) : m_domain.point(nb[k - 1]);
     };

@@ -80,7 +80,12 @@ find_degenerate_frames(const Planar_domain<GeomTraits>& domain) {
   using Index = typename Planar_domain<GeomTraits>::Index;
   constexpr bool exact = CGAL::Algebraic_structure_traits<typename GeomTraits::FT>::Is_exact::value;
   Degenerate_frame_analysis<Index> result;
-  auto collinear = domain.geom_traits().collinear_2_object();
+  // The orientation predicate, not collinear_2: the same exact test, but Epick filters it
+  // statically (collinear_2 went through interval arithmetic: 4% of a c1 run at 10^6 points).
+  auto orientation = domain.geom_traits().orientation_2_object();
+  auto collinear = [&](const auto& a, const auto& b, const auto& c) {
+    return orientation(a, b, c) == CGAL::COLLINEAR;
+  };
   std::vector<unsigned> degenerate_ends(domain.number_of_vertices(), 0);
   for (Index e = 0; e < domain.number_of_edges(); ++e) {
     if (domain.is_boundary_edge(e))
