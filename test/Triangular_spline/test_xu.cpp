@@ -20,7 +20,10 @@
 #include <CGAL/Triangular_spline/internal/parallel.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <random>
 #include <set>
@@ -1419,6 +1422,50 @@ TEST(LocalFit, ThreadsDoNotChangeTheResult) {
     const Epick::Point_2 q(domain.point(v).x() + 0.25, domain.point(v).y() - 0.5);
     ASSERT_EQ(one.value(v, q), three.value(v, q)) << v;
   }
+}
+
+// The vectorised QR of the local fits (two-lane dot products and updates, partial ordering of
+// the candidates) keeps the bits of the scalar code it replaced: an FNV-1a hash of every
+// vertex's degree, resolution, gradient and value off the vertex, recorded with the scalar
+// code (commit de3d17f). 2000 points of the unit square from a 64-bit LCG (corners first),
+// smooth data with a kink and a bump, so that the cross-validation picks every degree from
+// 1 to 5. A change of the fit that is meant to change values records a new hash.
+TEST(LocalFit, VectorisedQrKeepsTheBitsOfTheScalarOne) {
+  std::uint64_t state = 20261122;
+  auto next = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(state >> 11) * (1.0 / 9007199254740992.0);
+  };
+  std::vector<Epick::Point_2> points{{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+  while (points.size() < 2000) {
+    const double x = next();
+    points.emplace_back(x, next());
+  }
+  const auto domain = delaunay_of<Epick>(points);
+  std::vector<double> z;
+  for (const auto& p : domain.points())
+    z.push_back(std::exp(p.x()) * std::sin(2 * p.y()) + std::abs(p.x() - 0.4) +
+                (std::hypot(p.x() - 0.7, p.y() - 0.3) < 0.1 ? 0.05 : 0.0));
+  const TS::Local_polynomials<Epick> local(domain, z, 5);
+  std::uint64_t hash = 14695981039346656037ULL;
+  auto mix = [&](double x) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    for (int byte = 0; byte < 8; ++byte)
+      hash = (hash ^ ((bits >> (8 * byte)) & 0xff)) * 1099511628211ULL;
+  };
+  std::array<int, 6> degrees{};
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    ++degrees[std::size_t(local.degree(v))];
+    mix(local.degree(v));
+    mix(local.resolution(v));
+    const auto g = local.gradient(v);
+    mix(g[0]);
+    mix(g[1]);
+    mix(local.value(v, Epick::Point_2(domain.point(v).x() + 0.01, domain.point(v).y() - 0.02)));
+  }
+  EXPECT_EQ(degrees, (std::array<int, 6>{{0, 134, 80, 191, 25, 1570}}));
+  EXPECT_EQ(hash, 0xf6893f65837af1a2ULL);
 }
 
 namespace {
