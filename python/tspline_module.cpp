@@ -217,7 +217,7 @@ public:
   virtual void save(const std::string& path) const = 0;
   virtual std::shared_ptr<Spline> with_values(const Points& values,
                                               const std::optional<Points>& gradients) const = 0;
-  virtual py::dict dimension() const = 0;
+  virtual py::dict dimension(bool rational_fallback) const = 0;
   virtual py::dict info() const = 0;
   virtual py::array_t<double> points() const = 0;
   virtual py::array_t<std::int64_t> triangles() const = 0;
@@ -407,23 +407,28 @@ public:
     }
   }
 
-  py::dict dimension() const override {
+  py::dict dimension(bool rational_fallback) const override {
     py::dict d;
     const auto& domain = m_network->domain();
     const std::optional<long long> morgan_scott = TS::morgan_scott_dimension(domain);
     d["morgan_scott"] = morgan_scott ? py::object(py::int_(*morgan_scott)) : py::object(py::none());
-    TS::Dimension_bound bound;
+    // Proven by two bounds over the exact domain (the checked plan below, a modular rank
+    // above), as `tspline c1 --dimension` does; the rational rank only when asked.
+    TS::Dimension_certificate certificate;
     {
       py::gil_scoped_release release;
-      bound = TS::spline_dimension_upper_bound(domain);
+      certificate = TS::spline_dimension(domain, rational_fallback);
     }
-    d["upper_bound"] = bound.upper_bound;
-    d["prime"] = bound.prime;
+    d["dimension"] = certificate.dimension ? py::object(py::int_(*certificate.dimension))
+                                           : py::object(py::none());
+    d["proven"] = certificate.dimension.has_value();
+    d["lower_bound"] = certificate.free_parameters;
+    d["lower_bound_proven"] = certificate.lower_bound_proven;
+    d["upper_bound"] = certificate.upper_bound;
+    d["prime"] = certificate.prime;
+    d["primes_tried"] = certificate.primes_tried;
+    d["rational_rank"] = certificate.rational_rank;
     d["free_parameters"] = free_parameters();
-    if constexpr (std::is_same_v<Network, TS::C1_quintic_spline<K>>)
-      d["proven"] = bound.upper_bound == m_network->number_of_free_parameters();
-    else
-      d["proven"] = false;
     return d;
   }
 
@@ -1448,7 +1453,7 @@ PYBIND11_MODULE(_core, m) {
       .def("save", &Spline::save, py::arg("path"))
       .def("with_values", &Spline::with_values, py::arg("values"),
            py::arg("gradients") = py::none())
-      .def("dimension", &Spline::dimension)
+      .def("dimension", &Spline::dimension, py::arg("rational_fallback") = false)
       .def("info", &Spline::info)
       .def("points", &Spline::points)
       .def("triangles", &Spline::triangles)

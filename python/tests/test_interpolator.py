@@ -120,8 +120,9 @@ def test_properties(scattered):
     assert i["near_singular_vertices"] >= 0
     # 3V + 3F + E_I + 3E_B + sigma, Morgan-Scott's dimension on a generic triangulation
     d = f.dimension()
-    assert f.free_parameters == d["free_parameters"] == d["upper_bound"]
-    assert d["proven"]
+    assert f.free_parameters == d["free_parameters"] == d["upper_bound"] == d["lower_bound"]
+    assert d["proven"] and d["lower_bound_proven"] and d["dimension"] == d["upper_bound"]
+    assert d["primes_tried"] == 1 and d["prime"] > 2**30 and not d["rational_rank"]
     assert "C1Interpolator" in repr(f)
 
 
