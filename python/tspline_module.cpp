@@ -555,6 +555,7 @@ struct Scattered_domain {
   TS::Planar_domain<K> domain;
   std::vector<typename K::FT> values;
   std::shared_ptr<std::vector<std::size_t>> input_index;
+  std::size_t flat_hull_faces = 0; // flat triangles closing the hull, removed
 };
 
 template <class K>
@@ -573,8 +574,9 @@ Scattered_domain<K> scattered_domain(const double* xy, const double* z, std::siz
     data.values.push_back(FT(z[i]));
   }
   auto order = std::make_shared<std::vector<std::size_t>>();
-  auto [domain, values] = TS::delaunay_domain(data, order.get());
-  return {std::move(domain), std::move(values), std::move(order)};
+  std::size_t flat = 0;
+  auto [domain, values] = TS::delaunay_domain(data, order.get(), &flat);
+  return {std::move(domain), std::move(values), std::move(order), flat};
 }
 
 template <class K>
@@ -603,11 +605,13 @@ std::shared_ptr<Spline> make_c1(const Points& points, const Points& values,
   std::shared_ptr<Network> spline;
   std::shared_ptr<std::vector<std::size_t>> order;
   TS::Fit_statistics statistics;
+  std::size_t flat_hull_faces = 0;
   {
     py::gil_scoped_release release;
     settings.y_exponent = rescale ? rescale_exponent(xy, n) : 0;
     Scattered_domain<K> input = scattered_domain<K>(xy, z, n, settings.y_exponent);
     order = input.input_index;
+    flat_hull_faces = input.flat_hull_faces;
     std::vector<std::array<FT, 2>> g;
     if (dz) {
       const FT y_factor = power_of_two<FT>(settings.y_exponent);
@@ -633,6 +637,7 @@ std::shared_ptr<Spline> make_c1(const Points& points, const Points& values,
       spline->map_domain(scaled_y(spline->domain(), -settings.y_exponent));
   }
   py::dict info;
+  info["flat_hull_faces_removed"] = flat_hull_faces;
   info["vertices_by_degree"] = statistics.vertices_by_degree;
   if (fit == TS::Fit::ADAPTIVE) {
     info["vertices_trusted"] = statistics.vertices_by_trust[0];

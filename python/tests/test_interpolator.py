@@ -199,3 +199,22 @@ def test_mann(scattered, dyadic):
     g = tspline.MannInterpolator(p, linear(p))
     np.testing.assert_allclose(g(0.3, 0.7), linear(np.array([0.3, 0.7])), atol=1e-10)
     assert tspline.MannInterpolator(*dyadic, exact=True).certify()["verdict"] == "proof"
+
+
+def test_flat_hull_triangles_of_a_jittered_grid_are_removed():
+    # A grid whose coordinates carry rounding: the slivers closing its hull are removed, every
+    # hull point is on the boundary, and queries on the old hull lines are snapped (no NaN).
+    rng = np.random.default_rng(8)
+    n = 24
+    g = np.arange(n + 1) / n
+    p = np.array([(x, y) for x in g for y in g]) + 1e-14 * (rng.random(((n + 1) ** 2, 2)) - 0.5)
+    z = np.exp(p[:, 0]) * np.sin(2 * p[:, 1])
+    f = tspline.C1Interpolator(p, z)
+    i = f.info
+    assert i["flat_hull_faces_removed"] > 0
+    assert i["boundary_edges"] == 4 * n and i["vertices"] == (n + 1) ** 2
+    assert f.certify()["certified"]
+    t = rng.random(1000)
+    q = np.concatenate([np.c_[0 * t, t], np.c_[t, 0 * t], np.c_[1 + 0 * t, t], np.c_[t, 1 + 0 * t]])
+    err = np.abs(f(q) - np.exp(q[:, 0]) * np.sin(2 * q[:, 1]))
+    assert np.all(err < 1e-6)

@@ -67,6 +67,7 @@ struct Input {
   std::size_t merged_duplicates = 0;
   int y_exponent = 0; // --rescale: the domain's y is the data's times 2^y_exponent
   std::vector<std::array<typename K::FT, 2>> gradients; // --gradients, by domain vertex
+  std::size_t flat_hull_faces = 0; // flat triangles closing the hull, removed (Delaunay)
 };
 
 // --rescale: the power of two that brings the extent in y closest to the extent in x
@@ -140,10 +141,15 @@ Input<K> read_input(const std::string& path, bool rescale, bool gradients,
     const int exponent = rescale ? rescale_exponent(data.points) : 0;
     scale_y(data.points, exponent);
     std::vector<std::size_t> order;
-    auto [domain, values] = TS::delaunay_domain(data, &order);
-    Input<K> input{
-        std::move(domain),      std::move(values), "scattered points, Delaunay triangulation",
-        data.merged_duplicates, exponent,          {}};
+    std::size_t flat = 0;
+    auto [domain, values] = TS::delaunay_domain(data, &order, &flat);
+    Input<K> input{std::move(domain),
+                   std::move(values),
+                   "scattered points, Delaunay triangulation",
+                   data.merged_duplicates,
+                   exponent,
+                   {},
+                   flat};
     using FT = typename K::FT;
     const FT y_factor =
         exponent >= 0 ? FT(std::ldexp(1.0, exponent)) : FT(1) / FT(std::ldexp(1.0, -exponent));
@@ -437,6 +443,7 @@ Json run(const C1_job& job, std::ostream& out) {
   report["boundary_edges"] = d.number_of_boundary_edges();
   report["boundary_loops"] = d.number_of_boundary_loops();
   report["merged_duplicate_points"] = input.merged_duplicates;
+  report["flat_hull_faces_removed"] = input.flat_hull_faces;
   report["free_parameters"] = spline.number_of_free_parameters();
   report["free_parameters_formula"] = "3V + 3F + E_I + 3E_B + sigma";
   report["dimension_morgan_scott"] = morgan_scott ? Json(*morgan_scott) : Json();
@@ -569,8 +576,11 @@ Json run(const C1_job& job, std::ostream& out) {
         << "  domain: " << d.number_of_vertices() << " vertices (" << input_vertices
         << " in the input), " << d.number_of_faces() << " triangles, "
         << d.number_of_interior_edges() << " interior and " << d.number_of_boundary_edges()
-        << " boundary edges, " << d.number_of_boundary_loops() << " boundary loop(s)\n"
-        << "  degenerate frames: "
+        << " boundary edges, " << d.number_of_boundary_loops() << " boundary loop(s)\n";
+    if (input.flat_hull_faces > 0)
+      out << "  flat hull triangles removed: " << input.flat_hull_faces
+          << " (hull points on a line up to rounding)\n";
+    out << "  degenerate frames: "
         << (job.fix == "perturb" ? original_frames.frames.size()
                                  : spline.degenerate_frames().size())
         << (job.fix == "perturb"

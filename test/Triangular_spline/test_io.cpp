@@ -395,6 +395,27 @@ TYPED_TEST(ScatteredData, DelaunayDomainIsNumberedSpatiallyWhateverTheInputOrder
   EXPECT_EQ(again_values, values);
 }
 
+TYPED_TEST(ScatteredData, DelaunayDomainRemovesOnlyFlatTrianglesClosingTheHull) {
+  // (0, 0), (1, 0), an apex (1/2, y) above their edge and (1/2, 1): the hull triangle under
+  // the apex is flat when the sines of its angles at (0, 0) and (1, 0), 2y, are at most
+  // flat_hull_sine; removed, the apex joins the boundary and every point stays a vertex.
+  using K = TypeParam;
+  using FT = typename K::FT;
+  for (const double y : {2e-10, 1e-8}) {
+    TS::Scattered_data<K> data;
+    using P = typename K::Point_2;
+    data.points = {P(FT(0), FT(0)), P(FT(1), FT(0)), P(FT(0.5), FT(y)), P(FT(0.5), FT(1))};
+    data.values = {FT(0), FT(1), FT(2), FT(3)};
+    std::size_t flat = 7;
+    const auto [domain, values] = TS::delaunay_domain(data, nullptr, &flat);
+    const bool removed = 2 * y <= TS::flat_hull_sine;
+    EXPECT_EQ(flat, removed ? 1u : 0u) << y;
+    EXPECT_EQ(domain.number_of_vertices(), 4u);
+    EXPECT_EQ(domain.number_of_faces(), removed ? 2u : 3u) << y;
+    EXPECT_EQ(domain.number_of_boundary_edges(), 4u - (removed ? 0u : 1u)) << y;
+  }
+}
+
 TYPED_TEST(ScatteredData, DelaunayDomainCarriesTheValues) {
   using K = TypeParam;
   using FT = typename K::FT;

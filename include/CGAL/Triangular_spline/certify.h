@@ -100,11 +100,14 @@ struct Continuity_certificate {
 
   Each interior edge is checked with `check_join()` (for \f$k = 1\f$ with the default
   conditions: `check_C1_join()`, Xu's conditions (3.4) and (3.5) read directly on the
-  control points, the same conditions and residuals at a fraction of the cost). With an exact
-  number type and every condition exactly zero the verdict is a proof; a positive tolerance
-  accepts residuals up to it (compared exactly in the number type) but never makes a proof;
-  `double` arithmetic never proves. To certify a `double` network exactly, convert its
-  patches with `convert_patch()` (exact) and certify those.
+  control points, the same conditions and residuals at a fraction of the cost, written in the
+  frame of the larger of the two triangles: the two forms are equivalent, but in a sliver's
+  frame the weights grow like the inverse of its relative height and multiply the round-off
+  of its control values). With an exact number type and every condition exactly zero the
+  verdict is a proof; a positive tolerance accepts residuals up to it (compared exactly in
+  the number type) but never makes a proof; `double` arithmetic never proves. To certify a
+  `double` network exactly, convert its patches with `convert_patch()` (exact) and certify
+  those.
 
   \tparam TriangularSplineNetwork a model of `TriangularSplineNetwork`
   \tparam NamedParameters a sequence of named parameters
@@ -196,7 +199,8 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
         }
         const Join_report report =
             k == 1 && conditions == Join_conditions::EXTENSION
-                ? check_C1_join(network.patch(ef[0]), network.patch(ef[1]), certificate.tolerance)
+                ? internal::check_C1_join_in_larger_frame(
+                      network.patch(ef[0]), network.patch(ef[1]), certificate.tolerance)
                 : check_join(network.patch(ef[0]), network.patch(ef[1]), k, conditions,
                              certificate.tolerance);
         c.edge = e;

@@ -253,6 +253,28 @@ Join_report check_C1_join(const Bezier_triangle<GeomTraits, Value>& A,
   return report;
 }
 
+namespace internal {
+
+// check_C1_join() in the frame of the larger of the two triangles. Conditions (3.5) written
+// in A's frame and in B's are equivalent (once (3.4) holds, each residual of one form is the
+// other's times -1/lambda, q = lambda p + ...), so exact verdicts and zeros do not depend on
+// the choice; but in a sliver A the weights of q are about 1/(its relative height), and the
+// round-off of A's control values comes back multiplied by them (a 129^2 grid jittered by
+// 1e-9 of a cell: 377 edges beyond round-off, 9 in the larger frame, those between two
+// slivers). In the larger triangle's frame every weight is bounded by the same numerators
+// over the larger area.
+template <class GeomTraits, class Value>
+Join_report check_C1_join_in_larger_frame(const Bezier_triangle<GeomTraits, Value>& A,
+                                          const Bezier_triangle<GeomTraits, Value>& B,
+                                          double tolerance) {
+  const auto area = [](const Bezier_triangle<GeomTraits, Value>& P) {
+    return CGAL::abs(GeomTraits().compute_area_2_object()(P.vertex(0), P.vertex(1), P.vertex(2)));
+  };
+  return area(B) > area(A) ? check_C1_join(B, A, tolerance) : check_C1_join(A, B, tolerance);
+}
+
+} // namespace internal
+
 /*!
   \ingroup PkgTriangularSplineContinuity
   \brief returns `true` iff `A` and `B` join with \f$C^k\f$ continuity: an exact verdict.
