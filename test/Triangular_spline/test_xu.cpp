@@ -161,6 +161,17 @@ std::vector<double> errors_at(const C1_quintic_spline<Epick>& spline,
   return errors;
 }
 
+// The (n+1)^2 points of an n x n grid of the unit square, each coordinate moved by a uniform
+// amount of at most half of `jitter` cells.
+std::vector<Epick::Point_2> jittered_grid(int n, double jitter, std::mt19937& engine) {
+  std::uniform_real_distribution<double> shift(-0.5 * jitter, 0.5 * jitter);
+  std::vector<Epick::Point_2> points;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      points.emplace_back((i + shift(engine)) / n, (j + shift(engine)) / n);
+  return points;
+}
+
 // call() throws Invalid_input with `text` in its message.
 template <class Call>
 bool throws_with(const Call& call, const std::string& text) {
@@ -1312,14 +1323,9 @@ TEST(StablePropagation, GridJitteredByRoundingStaysAccurate) {
   // dropped terms of about delta came back multiplied by 1/delta, errors of 3e-3 inside the
   // domain against 8e-10 on the grid itself.
   std::mt19937 engine(3);
-  std::uniform_real_distribution<double> jitter(-0.5e-12, 0.5e-12), uniform(0.05, 0.95);
-  const int n = 128;
+  std::uniform_real_distribution<double> uniform(0.05, 0.95);
   auto f = [](double x, double y) { return std::exp(x) * std::sin(2 * y); };
-  std::vector<Epick::Point_2> points;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j)
-      points.emplace_back((i + jitter(engine)) / n, (j + jitter(engine)) / n);
-  const auto domain = delaunay_of<Epick>(points);
+  const auto domain = delaunay_of<Epick>(jittered_grid(128, 1e-12, engine));
   std::vector<double> values;
   for (Index v = 0; v < domain.number_of_vertices(); ++v)
     values.push_back(f(domain.point(v).x(), domain.point(v).y()));
@@ -1579,13 +1585,8 @@ TEST(LocalFit, StaysStableBesideANearlyStraightHull) {
   auto f = [](double x, double y) { return std::exp(x) * std::sin(2 * y); };
   for (const double jitter : {1e-5, 1e-4}) {
     std::mt19937 engine(3);
-    std::uniform_real_distribution<double> shift(-0.5 * jitter, 0.5 * jitter), uniform(0, 1);
-    const int n = 32;
-    std::vector<Epick::Point_2> points;
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= n; ++j)
-        points.emplace_back((i + shift(engine)) / n, (j + shift(engine)) / n);
-    const auto domain = delaunay_of<Epick>(points);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    const auto domain = delaunay_of<Epick>(jittered_grid(32, jitter, engine));
     std::vector<double> values;
     for (Index v = 0; v < domain.number_of_vertices(); ++v)
       values.push_back(f(domain.point(v).x(), domain.point(v).y()));
