@@ -5,11 +5,16 @@
 #include "commands.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#if defined(__linux__) && defined(__GLIBC__)
+#include <unistd.h>
+#endif
 
 #ifndef TRIANGULAR_SPLINE_VERSION
 #error                                                                                             \
@@ -75,6 +80,26 @@ std::string one_line(std::string text) {
   return result;
 }
 
+// Restarts the tool once with malloc's large blocks on transparent huge pages (glibc >= 2.35
+// reads GLIBC_TUNABLES at start-up only, hence the exec). A c1 run at 10^6 points touches
+// 1.4 GB of arrays, and on 4 KB pages their faults and TLB misses cost it 8% of its CPU
+// (paired runs: 34.0 s against 36.9 s, peak 1386 against 1378 MB). A tunable the user set
+// (glibc.malloc.hugetlb=0 too, e.g. to keep a run under valgrind in one process) is kept;
+// where the exec fails, the run goes on as it is.
+void use_huge_pages(char* argv[]) {
+#if defined(__linux__) && defined(__GLIBC__)
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  std::string value = tunables == nullptr ? "" : tunables;
+  if (value.find("glibc.malloc.hugetlb") != std::string::npos)
+    return;
+  value += std::string(value.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
+  if (setenv("GLIBC_TUNABLES", value.c_str(), 1) == 0)
+    execv("/proc/self/exe", argv);
+#else
+  (void)argv;
+#endif
+}
+
 } // namespace
 
 std::string_view tspline::command_summary(std::string_view name) {
@@ -106,6 +131,7 @@ int main(int argc, char* argv[]) {
     return 2;
   }
 
+  use_huge_pages(argv);
   const std::vector<std::string> args(argv + 2, argv + argc);
   const std::string prefix = "tspline " + std::string(command->name) + ": ";
   try {
