@@ -175,8 +175,19 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
       return false;
     }
   }();
+  // Double slot networks of degree 5: the same residuals read on the slots
+  // (internal::fast_double_C1_join()); only edges it does not pass take the full check.
+  constexpr bool fast_double = [] {
+    if constexpr (internal::has_slot_values<Network>::value) {
+      using FT = typename Geom_traits::FT;
+      return !CGAL::Algebraic_structure_traits<FT>::Is_exact::value &&
+             std::is_same_v<std::decay_t<decltype(std::declval<const Network&>().value(0u))>, FT>;
+    } else {
+      return false;
+    }
+  }();
   bool use_fast = false;
-  if constexpr (fast_exact)
+  if constexpr (fast_exact || fast_double)
     use_fast = k == 1 && conditions == Join_conditions::EXTENSION && network.degree() == 5;
   // The edges are independent: checked on all cores (exact checks only on the fast path, the
   // others allocate), the verdicts collected in edge order.
@@ -196,6 +207,10 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
             c.holds = c.zero = true;
             return;
           }
+        }
+        if constexpr (fast_double) {
+          if (use_fast && internal::fast_double_C1_join(network, e, certificate.tolerance, c))
+            return;
         }
         const Join_report report =
             k == 1 && conditions == Join_conditions::EXTENSION

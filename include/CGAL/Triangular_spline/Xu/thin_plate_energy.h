@@ -11,6 +11,8 @@
 
 #include <CGAL/number_utils.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -186,11 +188,20 @@ typename GeomTraits::FT thin_plate_energy(const Bezier_triangle<GeomTraits>& pat
   FT scale;
   internal::thin_plate_frame(m, patch.vertex(0), patch.vertex(1), patch.vertex(2), ex, ey, scale);
   // Differences first (Farin's directional derivatives, one degree at a time), then squares:
-  // D_x b and D_y b of degree m - 1, then D_xx, D_xy, D_yy of degree m - 2.
-  const auto fine = bernstein_indices(m - 1), coarse = bernstein_indices(m - 2);
-  auto difference = [](const std::array<FT, 3>& e, const std::vector<Multi_index>& to, int from,
-                       auto&& at) {
-    std::vector<FT> out(to.size(), FT(0));
+  // D_x b and D_y b of degree m - 1, then D_xx, D_xy, D_yy of degree m - 2. Up to degree 6
+  // the nets stay on the stack: tspline c1 takes the energy of every patch.
+  using Indices = boost::container::small_vector<Multi_index, 28>;
+  using Net = boost::container::small_vector<FT, 28>;
+  auto indices = [](int degree) {
+    Indices out;
+    for (int i = degree; i >= 0; --i) // the order of bernstein_indices()
+      for (int j = degree - i; j >= 0; --j)
+        out.push_back({i, j, degree - i - j});
+    return out;
+  };
+  const Indices fine = indices(m - 1), coarse = indices(m - 2);
+  auto difference = [](const std::array<FT, 3>& e, const Indices& to, int from, auto&& at) {
+    Net out(to.size(), FT(0));
     for (std::size_t g = 0; g < to.size(); ++g)
       for (int i = 0; i < 3; ++i) {
         Multi_index a = to[g];
@@ -202,19 +213,19 @@ typename GeomTraits::FT thin_plate_energy(const Bezier_triangle<GeomTraits>& pat
   auto from_patch = [&](std::size_t, const Multi_index& a) -> const FT& {
     return patch.control_point(a);
   };
-  const std::vector<FT> dx = difference(ex, fine, m, from_patch);
-  const std::vector<FT> dy = difference(ey, fine, m, from_patch);
-  auto of = [](const std::vector<FT>& v) {
+  const Net dx = difference(ex, fine, m, from_patch);
+  const Net dy = difference(ey, fine, m, from_patch);
+  auto of = [](const Net& v) {
     return [&v](std::size_t i, const Multi_index&) -> const FT& { return v[i]; };
   };
-  const std::array<std::vector<FT>, 3> second{{difference(ex, coarse, m - 1, of(dx)),
-                                               difference(ey, coarse, m - 1, of(dx)),
-                                               difference(ey, coarse, m - 1, of(dy))}};
+  const std::array<Net, 3> second{{difference(ex, coarse, m - 1, of(dx)),
+                                   difference(ey, coarse, m - 1, of(dx)),
+                                   difference(ey, coarse, m - 1, of(dy))}};
   const std::vector<FT>& table = internal::bernstein_gram_table<FT>(m - 2);
   const std::size_t c = coarse.size();
   FT energy(0);
   for (int p = 0; p < 3; ++p) {
-    const std::vector<FT>& d = second[std::size_t(p)];
+    const Net& d = second[std::size_t(p)];
     FT quadratic(0);
     for (std::size_t a = 0; a < c; ++a) {
       FT row(0);
