@@ -182,8 +182,6 @@ public:
     if (V + 4 * E + 6 * F >= null_slot)
       throw Invalid_input("spline: domain too large for 32-bit slot indices");
     m_control_slots = V + 4 * E + 6 * F;
-    m_values.assign(m_control_slots, zero());
-    m_free.assign(m_values.size(), 0);
     build_plan();
   }
   /// @}
@@ -780,14 +778,18 @@ private:
     for (;;) {
       ++m_plan_rounds;
       m_rules.clear();
-      m_values.resize(m_control_slots); // auxiliary slots are made anew by each round
-      m_free.assign(m_values.size(), 0);
+      // Auxiliary slots are made anew by each round, counted by m_free; the values are
+      // allocated once the count is known (growing them by the auxiliary slots reallocated
+      // and copied all control values: 200 MB at 10^6 points).
+      m_free.assign(m_control_slots, 0);
       m_free_slots.clear();
       std::vector<Index> thin_edge_of_rule;
       build_plan_once(allow_thin, thin_edge_of_rule);
       if (order_rules(thin_edge_of_rule, allow_thin))
         break;
     }
+    m_values.assign(m_free.size(), zero());
+    m_free_slots.reserve(std::size_t(std::count(m_free.begin(), m_free.end(), char(1))));
     for (Slot s = 0; s < m_free.size(); ++s)
       if (m_free[s])
         m_free_slots.push_back(s);
@@ -1250,11 +1252,9 @@ private:
         weights[1] = FT(0);
       }
       const bool last = next == combination.size();
-      const Slot to = last ? target : static_cast<Slot>(m_values.size());
-      if (!last) {
-        m_values.push_back(zero());
-        m_free.push_back(0);
-      }
+      const Slot to = last ? target : static_cast<Slot>(m_free.size());
+      if (!last)
+        m_free.push_back(0); // the values are allocated after planning
       add_rule(to, sources, weights);
       thin_edge_of_rule.push_back(Domain::null_index);
       sum = to;
@@ -1283,7 +1283,7 @@ private:
     // 1. One pass in emission order: a rule whose sources are all free or computed by an
     // earlier kept rule stays where it is (all rules but those reading a thin link's edge
     // point, and what depends on them). Only the others need the depth-first search.
-    std::vector<char> ready(m_values.size(), 0);
+    std::vector<char> ready(m_free.size(), 0);
     for (std::size_t s = 0; s < m_free.size(); ++s)
       ready[s] = m_free[s];
     std::vector<unsigned char> state(R, 0); // 0 deferred, 1 on the stack, 2 done
