@@ -14,6 +14,7 @@
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Exact_rational.h>
 
+#include <boost/container/small_vector.hpp>
 #include <boost/container/static_vector.hpp>
 
 #include <algorithm>
@@ -657,7 +658,8 @@ private:
     // The corner and two stars: the pair that extrapolates least, i.e. whose largest
     // barycentric weight over the region is smallest (the propagation weights of the
     // corner region); a face always gives a valid pair.
-    std::vector<std::array<double, 2>> offsets(d + 1);
+    // on the stack for all but rare high-degree vertices (one allocation per vertex before)
+    boost::container::small_vector<std::array<double, 2>, 24> offsets(d + 1);
     const double vx = CGAL::to_double(point_of(0).x()), vy = CGAL::to_double(point_of(0).y());
     for (std::size_t k = 1; k <= d; ++k)
       offsets[k] = {{CGAL::to_double(point_of(k).x()) - vx, CGAL::to_double(point_of(k).y()) - vy}};

@@ -197,11 +197,20 @@ public:
     for (auto& row : e)
       row.fill(FT(0));
     e[0][0] = FT(1);
+    // Copies of points other than v multiplied in so far: e[h][k] with h + k > passes is
+    // still exactly 0, and the updates below skip it (they would add exact zeros to it). v
+    // itself (xi = eta = 0) is skipped entirely: its factors add exact zeros, and e never
+    // holds -0 for them to turn into +0. A slot's label repeats the vertex whose polynomial
+    // it reads 3 to 5 times, so most of the work of a polar value was these no-ops.
+    int passes = 0;
     for (auto it = begin; it != end; ++it) {
       const Point_2& q = *it->first;
+      if (&q == &c || (q.x() == c.x() && q.y() == c.y()))
+        continue;
       const FT xi = (q.x() - c.x()) * inverse_scale, eta = (q.y() - c.y()) * inverse_scale;
-      for (int copy = 0; copy < it->second; ++copy)
-        for (int total = d; total >= 1; --total)
+      for (int copy = 0; copy < it->second; ++copy) {
+        ++passes;
+        for (int total = (std::min)(d, passes); total >= 1; --total)
           for (int h = 0; h <= total; ++h) {
             const int k = total - h;
             FT add(0);
@@ -211,12 +220,17 @@ public:
               add = add + eta * e[std::size_t(h)][std::size_t(k - 1)];
             e[std::size_t(h)][std::size_t(k)] = e[std::size_t(h)][std::size_t(k)] + add;
           }
+      }
     }
     Value sum = m_coefficients[coefficients_per_vertex * std::size_t(v)];
     for (int h = 0; h <= d; ++h)
       for (int k = 0; h + k <= d; ++k) {
         if (h + k == 0)
           continue;
+        if (h + k > passes) { // e is 0: (0 / count) is 0, without the division
+          sum = sum + FT(0) * coefficient(v, h, k);
+          continue;
+        }
         const FT count = FT(binomial(n, h) * binomial(n - h, k));
         sum = sum + (e[std::size_t(h)][std::size_t(k)] / count) * coefficient(v, h, k);
       }
