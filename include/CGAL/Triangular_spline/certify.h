@@ -162,30 +162,23 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
   for (Index e = 0; e < domain.number_of_edges(); ++e)
     if (!domain.is_boundary_edge(e))
       interior.push_back(e);
-  // Exact slot networks of degree 5 (C1_quintic_spline) with heights: C^1 is decided on the
-  // slots by internal::fast_exact_C1_join(), an exact test without patches or gcds; only an
-  // edge it does not find exactly zero goes through check_C1_join() for its residuals.
+  // Slot networks of degree 5 (C1_quintic_spline) with heights: exact ones are decided on
+  // the slots by internal::fast_exact_C1_join(), an exact test without patches or gcds;
+  // double ones get the full check's residuals read on the slots
+  // (internal::fast_double_C1_join()). Only the edges these leave open go through
+  // check_C1_join() on two patches.
   using Network = TriangularSplineNetwork;
-  constexpr bool fast_exact = [] {
-    if constexpr (internal::has_slot_values<Network>::value) {
-      using FT = typename Geom_traits::FT;
-      return CGAL::Algebraic_structure_traits<FT>::Is_exact::value &&
-             std::is_same_v<std::decay_t<decltype(std::declval<const Network&>().value(0u))>, FT>;
-    } else {
+  constexpr bool slot_values = [] {
+    if constexpr (internal::has_slot_values<Network>::value)
+      return std::is_same_v<std::decay_t<decltype(std::declval<const Network&>().value(0u))>,
+                            typename Geom_traits::FT>;
+    else
       return false;
-    }
   }();
-  // Double slot networks of degree 5: the same residuals read on the slots
-  // (internal::fast_double_C1_join()); only edges it does not pass take the full check.
-  constexpr bool fast_double = [] {
-    if constexpr (internal::has_slot_values<Network>::value) {
-      using FT = typename Geom_traits::FT;
-      return !CGAL::Algebraic_structure_traits<FT>::Is_exact::value &&
-             std::is_same_v<std::decay_t<decltype(std::declval<const Network&>().value(0u))>, FT>;
-    } else {
-      return false;
-    }
-  }();
+  constexpr bool exact_type =
+      CGAL::Algebraic_structure_traits<typename Geom_traits::FT>::Is_exact::value;
+  constexpr bool fast_exact = slot_values && exact_type;
+  constexpr bool fast_double = slot_values && !exact_type;
   bool use_fast = false;
   if constexpr (fast_exact || fast_double)
     use_fast = k == 1 && conditions == Join_conditions::EXTENSION && network.degree() == 5;

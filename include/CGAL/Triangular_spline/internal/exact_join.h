@@ -4,9 +4,10 @@
 #ifndef CGAL_TRIANGULAR_SPLINE_INTERNAL_EXACT_JOIN_H
 #define CGAL_TRIANGULAR_SPLINE_INTERNAL_EXACT_JOIN_H
 
-// The fast exact C^1 check of certify_continuity() for splines that store their control
-// values in shared slots (C1_quintic_spline): Xu's conditions read on the slots of the two
-// faces, no patch built, and each condition decided by an exact zero test.
+// The fast C^1 checks of certify_continuity() for splines that store their control values in
+// shared slots (C1_quintic_spline): Xu's conditions read on the slots of the two faces, no
+// patch built; in exact number types each condition decided by an exact zero test, in
+// double the residuals of the full check, bit for bit.
 //
 // Why no interval filter decides here: a join condition holds iff an affine combination of
 // control values is exactly zero, and an interval can only show that it is not (a failure).
@@ -196,27 +197,25 @@ bool fast_double_C1_join(const Network& network, Index e, double tolerance, Cert
     return false;
   av[0] = 3 - av[1] - av[2];
   bv[0] = 3 - bv[1] - bv[2];
+  // Twice the signed area as a Bezier_triangle's constructor computes it; 0 where that
+  // constructor throws (collinear corners, or a determinant that rounds to 0 or overflows).
+  const auto orientation = traits.orientation_2_object();
+  auto usable_area2 = [&](const auto& t) {
+    const Point_2 &a = domain.point(t[0]), &b = domain.point(t[1]), &c = domain.point(t[2]);
+    if (orientation(a, b, c) == CGAL::COLLINEAR)
+      return FT(0);
+    const FT area2 = determinant(b - a, c - a);
+    return CGAL::is_finite(area2) ? area2 : FT(0);
+  };
   const Point_2& r = domain.point(ta[std::size_t(av[1])]);
   const Point_2& s = domain.point(ta[std::size_t(av[2])]);
-  const auto orientation = traits.orientation_2_object();
-  const Point_2& v0 = domain.point(ta[0]);
-  const Point_2& v1 = domain.point(ta[1]);
-  const Point_2& v2 = domain.point(ta[2]);
   const Point_2& q = domain.point(tb[std::size_t(bv[0])]);
+  const FT area2 = usable_area2(ta);
+  // overlapping triangles (shared_edge() throws) or a patch that could not be built
   if (orientation(r, s, domain.point(ta[std::size_t(av[0])])) == orientation(r, s, q) ||
-      orientation(v0, v1, v2) == CGAL::COLLINEAR ||
-      orientation(domain.point(tb[0]), domain.point(tb[1]), domain.point(tb[2])) == CGAL::COLLINEAR)
+      CGAL::is_zero(area2) || CGAL::is_zero(usable_area2(tb)))
     return false;
-  const FT area2 = determinant(v1 - v0, v2 - v0);
-  if (CGAL::is_zero(area2) || !CGAL::is_finite(area2))
-    return false;
-  {
-    const auto& t = tb;
-    const FT b2 = determinant(domain.point(t[1]) - domain.point(t[0]),
-                              domain.point(t[2]) - domain.point(t[0]));
-    if (CGAL::is_zero(b2) || !CGAL::is_finite(b2))
-      return false;
-  }
+  const Point_2 &v0 = domain.point(ta[0]), &v1 = domain.point(ta[1]), &v2 = domain.point(ta[2]);
   const FT inverse_area2 = FT(1) / area2;
   const FT mu = determinant(q - v0, v2 - v0) * inverse_area2;
   const FT nu = determinant(v1 - v0, q - v0) * inverse_area2;
