@@ -647,6 +647,16 @@ std::shared_ptr<Spline> make_c1(const Points& points, const Points& values,
   }
   if (fit == TS::Fit::ADAPTIVE || fit == TS::Fit::MINIMAL_ENERGY)
     info["tension"] = tension;
+  if (statistics.solver_sweeps > 0) {
+    py::dict solver;
+    solver["method"] = statistics.solver_method;
+    solver["sweeps"] = statistics.solver_sweeps;
+    solver["windows_per_sweep"] = statistics.solver_windows;
+    solver["window_solves"] = statistics.solver_window_solves;
+    solver["last_change"] = statistics.solver_last_change;
+    solver["converged"] = statistics.solver_converged;
+    info["solver"] = solver;
+  }
   std::shared_ptr<const Network> network = spline;
   auto locator = Spline_impl<K, Network>::make_locator(network);
   return std::make_shared<Spline_impl<K, Network>>(network, locator, order, "c1", settings, info);

@@ -171,6 +171,19 @@ def test_tension():
     assert np.array_equal(again(q), plain(q), equal_nan=True)
 
 
+def test_solver_statistics():
+    # The global fits report their solve: small sets in one direct solve; the local fit
+    # solves nothing, hence no entry.
+    p = np.random.default_rng(11).random((200, 2))
+    z = np.sin(3 * p[:, 0]) * p[:, 1]
+    for fit in ("energy", "lsq"):
+        solver = tspline.C1Interpolator(p, z, fit=fit).info["solver"]
+        assert solver["method"] == "direct"
+        assert solver["sweeps"] == 1 and solver["windows_per_sweep"] == 0
+        assert solver["window_solves"] == 1 and solver["converged"]
+    assert "solver" not in tspline.C1Interpolator(p, z, fit="local").info
+
+
 def test_certify_exact_is_a_proof(dyadic):
     p, z = dyadic
     c = tspline.C1Interpolator(p, z, exact=True).certify()

@@ -437,6 +437,16 @@ Json run(const C1_job& job, std::ostream& out) {
     }
     report["local_polynomials"] = local;
   }
+  if (fit_statistics.solver_sweeps > 0) {
+    Json solver = Json::object();
+    solver["method"] = fit_statistics.solver_method;
+    solver["sweeps"] = fit_statistics.solver_sweeps;
+    solver["windows_per_sweep"] = fit_statistics.solver_windows;
+    solver["window_solves"] = fit_statistics.solver_window_solves;
+    solver["last_change"] = fit_statistics.solver_last_change;
+    solver["converged"] = fit_statistics.solver_converged;
+    report["solver"] = solver;
+  }
   report["vertices"] = d.number_of_vertices();
   report["faces"] = d.number_of_faces();
   report["interior_edges"] = d.number_of_interior_edges();
@@ -612,6 +622,13 @@ Json run(const C1_job& job, std::ostream& out) {
           << ")";
     out << "\n  fit: " << job.fit << ", arithmetic: " << (job.exact ? "exact rationals" : "double")
         << ", largest interpolation error: " << interpolation_error << "\n";
+    if (fit_statistics.solver_method == "windows")
+      out << "  solved by windows: " << fit_statistics.solver_sweeps << " sweeps of "
+          << fit_statistics.solver_windows << " windows (" << fit_statistics.solver_window_solves
+          << " window solves), "
+          << (fit_statistics.solver_converged ? "converged"
+                                              : "NOT converged: stopped at the sweep limit")
+          << "\n";
     if (job.gradients)
       out << "  gradients: given at every vertex, interpolated\n";
     if (input.y_exponent != 0)

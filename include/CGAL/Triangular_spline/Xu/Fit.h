@@ -5,6 +5,7 @@
 #define CGAL_TRIANGULAR_SPLINE_XU_FIT_H
 
 #include <array>
+#include <string>
 #include <cstddef>
 
 namespace CGAL {
@@ -118,6 +119,19 @@ struct Fit_statistics {
   /// skipped beyond \f$10^4\f$ untrusted vertices; it is now linear in their number and
   /// always done
   bool energy_skipped = false;
+  /// The global solve of the `MINIMAL_ENERGY` and `LEAST_SQUARES` fits, smoothing, and the
+  /// `ADAPTIVE` fit's energy solve: how it was solved (`"direct"`: one sparse Cholesky
+  /// factorization, `"windows"`: sweeps of overlapping windows; empty when nothing was
+  /// solved), the sweeps (1 for the direct solve, 0 when there was no solve), the windows per
+  /// sweep, the window solves over all sweeps, the largest change of a control value in the
+  /// last sweep, and whether that change met the solver's tolerance (else the sweeps stopped
+  /// at their limit)
+  std::string solver_method;
+  int solver_sweeps = 0;
+  std::size_t solver_windows = 0;
+  std::size_t solver_window_solves = 0;
+  double solver_last_change = 0;
+  bool solver_converged = true;
 };
 
 } // namespace Triangular_spline

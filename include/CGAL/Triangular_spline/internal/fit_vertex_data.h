@@ -313,6 +313,13 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     });
   }
   spline.propagate();
+  static const char* const methods[] = {"", "direct", "windows"};
+  statistics.solver_method = methods[solved.method];
+  statistics.solver_sweeps = solved.sweeps;
+  statistics.solver_windows = solved.windows;
+  statistics.solver_window_solves = solved.window_solves;
+  statistics.solver_last_change = solved.last_change;
+  statistics.solver_converged = solved.converged;
   if (solver)
     *solver = solved;
   return statistics;

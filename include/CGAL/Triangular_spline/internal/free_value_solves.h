@@ -33,17 +33,30 @@ namespace Triangular_spline {
 namespace internal {
 
 // Every slot's value as an affine function of the unknowns, by running the rules
-// symbolically: value(s) = sum rows[s] x + constant[s]. The unknowns are the free slots,
-// without the corners when they interpolate the data (`corners_fixed`) and without the
-// slots for which fixed(s, value) gives a value.
+// symbolically: value(s) = sum_i weight[i] x[unknown[i]] + constant[s] over the entries i of
+// slot s's row. The unknowns are the free slots, without the corners when they interpolate
+// the data (`corners_fixed`) and without the slots for which fixed(s, value) gives a value.
+// The rows lie in two flat arrays (about 2.8 entries per slot on random points; a vector
+// per slot cost 2.6 s and 1 GB at 10^5 points), each sorted by unknown.
 template <class Value>
 struct Affine_slots {
   static constexpr int D = Value_traits<Value>::dimension;
   std::vector<int> column;
   std::size_t unknowns = 0;
-  std::vector<std::vector<std::pair<int, double>>> rows;
+  std::vector<std::size_t> row_begin; // slot s's entries: row_begin[s] .. + row_size[s]
+  std::vector<std::uint32_t> row_size;
+  std::vector<int> unknown;
+  std::vector<double> weight;
   std::vector<std::array<double, D>> constant;
   std::vector<std::pair<std::uint32_t, Value>> fixed; // the free slots that are not unknowns
+
+  bool has_row(std::size_t s) const { return row_size[s] != 0; }
+  // calls f(unknown, weight) for the entries of slot s's row, in increasing unknown order
+  template <class F>
+  void for_each_entry(std::size_t s, const F& f) const {
+    for (std::size_t i = row_begin[s], end = i + row_size[s]; i < end; ++i)
+      f(unknown[i], weight[i]);
+  }
 };
 
 template <class GeomTraits, class Value, class Fixed>
@@ -57,7 +70,10 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
   const std::size_t V = spline.domain().number_of_vertices();
   Affine_slots<Value> a;
   a.column.assign(n, -1);
-  a.rows.resize(n);
+  a.row_begin.assign(n, 0);
+  a.row_size.assign(n, 0);
+  a.unknown.reserve(3 * n);
+  a.weight.reserve(3 * n);
   a.constant.resize(n);
   for (auto& c : a.constant)
     c.fill(0);
@@ -67,38 +83,79 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
       given = values[s];
     else if (!fixed(s, given)) {
       a.column[s] = static_cast<int>(a.unknowns++);
-      a.rows[s] = {{a.column[s], 1.0}};
+      a.row_begin[s] = a.unknown.size();
+      a.row_size[s] = 1;
+      a.unknown.push_back(a.column[s]);
+      a.weight.push_back(1.0);
       continue;
     }
     for (int c = 0; c < D; ++c)
       a.constant[s][std::size_t(c)] = CGAL::to_double(Traits::coordinate(given, c));
     a.fixed.emplace_back(s, given);
   }
-  std::vector<std::pair<int, double>> merged;
+  // A rule's row: the merge of its (at most three) sources' sorted rows, equal unknowns
+  // summed in source order.
+  constexpr int max_sources = 3;
   for (const auto& rule : spline.rules()) {
-    merged.clear();
+    std::array<std::size_t, max_sources> at{}, end{};
+    std::array<double, max_sources> w{};
     std::array<double, D> k;
     k.fill(0);
-    for (int i = 0; i < rule.size(); ++i) {
-      const double w = CGAL::to_double(rule.weights[std::size_t(i)]);
+    std::size_t total = 0;
+    const int sources = rule.size();
+    for (int i = 0; i < sources; ++i) {
       const Slot src = rule.sources[std::size_t(i)];
-      for (const auto& [j, c] : a.rows[src])
-        merged.emplace_back(j, w * c);
+      w[std::size_t(i)] = CGAL::to_double(rule.weights[std::size_t(i)]);
+      at[std::size_t(i)] = a.row_begin[src];
+      end[std::size_t(i)] = at[std::size_t(i)] + a.row_size[src];
+      total += a.row_size[src];
       for (int c = 0; c < D; ++c)
-        k[std::size_t(c)] += w * a.constant[src][std::size_t(c)];
+        k[std::size_t(c)] += w[std::size_t(i)] * a.constant[src][std::size_t(c)];
     }
-    std::sort(merged.begin(), merged.end());
-    auto& row = a.rows[rule.target];
-    row.clear();
-    for (const auto& [j, c] : merged) {
-      if (!row.empty() && row.back().first == j)
-        row.back().second += c;
-      else
-        row.emplace_back(j, c);
+    const std::size_t begin = a.unknown.size();
+    a.unknown.resize(begin + total); // may move the arrays: indices, not pointers, above
+    a.weight.resize(begin + total);
+    std::size_t out = begin;
+    for (;;) {
+      int j = std::numeric_limits<int>::max();
+      for (int i = 0; i < sources; ++i)
+        if (at[std::size_t(i)] < end[std::size_t(i)])
+          j = (std::min)(j, a.unknown[at[std::size_t(i)]]);
+      if (j == std::numeric_limits<int>::max())
+        break;
+      double c = 0;
+      for (int i = 0; i < sources; ++i)
+        if (at[std::size_t(i)] < end[std::size_t(i)] && a.unknown[at[std::size_t(i)]] == j)
+          c += w[std::size_t(i)] * a.weight[at[std::size_t(i)]++];
+      a.unknown[out] = j;
+      a.weight[out++] = c;
     }
+    a.unknown.resize(out);
+    a.weight.resize(out);
+    a.row_begin[rule.target] = begin;
+    a.row_size[rule.target] = std::uint32_t(out - begin);
     a.constant[rule.target] = k;
   }
   return a;
+}
+
+// The unit of the solver's tolerance (Schwarz_options): the largest range of a coordinate
+// of the data values; their largest magnitude if they are constant, 1 if all zero.
+template <class Value>
+double data_scale(const std::vector<Value>& values) {
+  using Traits = Value_traits<Value>;
+  double range = 0, magnitude = 0;
+  for (int c = 0; c < Traits::dimension; ++c) {
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const Value& v : values) {
+      const double t = CGAL::to_double(Traits::coordinate(v, c));
+      lo = (std::min)(lo, t);
+      hi = (std::max)(hi, t);
+      magnitude = (std::max)(magnitude, std::abs(t));
+    }
+    range = (std::max)(range, hi - lo);
+  }
+  return range > 0 ? range : magnitude > 0 ? magnitude : 1.0;
 }
 
 // The weight of a triangle's energy in the minimal-energy fits: 1, except for thin
@@ -170,7 +227,7 @@ Schwarz_statistics minimise_slot_quadratic(
     C1_quintic_spline<GeomTraits, Value>& spline, const Affine_slots<Value>& a,
     const std::vector<double>& energy_weight, const std::vector<double>& tension_weight,
     const std::vector<std::pair<std::uint32_t, Value>>& misfits, double misfit_weight,
-    const Initial& initial, const Schwarz_options& options, int default_sweeps, const char* what) {
+    const Initial& initial, const Schwarz_options& options, double scale, const char* what) {
   using FT = typename GeomTraits::FT;
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   using Traits = Value_traits<Value>;
@@ -207,6 +264,7 @@ Schwarz_statistics minimise_slot_quadratic(
       face_misfits[next[owning_face[s]]++] = {s, target};
     }
   }
+  owning_face = {};
   // the owner of an unknown: the vertex of largest multiplicity of its slot's label
   // (smallest index on ties)
   std::vector<Slot> slot_of(a.unknowns);
@@ -229,107 +287,150 @@ Schwarz_statistics minimise_slot_quadratic(
   }
   auto unknowns_of = [&](std::uint32_t f, std::vector<std::uint32_t>& out) {
     for (const auto& index : indices)
-      for (const auto& entry : a.rows[spline.slot(f, index)])
-        out.push_back(std::uint32_t(entry.first));
+      a.for_each_entry(spline.slot(f, index),
+                       [&](int j, double) { out.push_back(std::uint32_t(j)); });
   };
-  std::vector<int> columns;
-  using Dense = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  Dense L(10, Eigen::Index(n)), M(10, 10);
-  Eigen::MatrixXd R, C, X, MX, H, B;
-  auto assemble = [&](std::uint32_t f, const std::vector<int>& local, const Eigen::MatrixXd& at,
-                      std::vector<Eigen::Triplet<double>>& triplets, Eigen::MatrixXd& rhs) {
+  // The factors of the face terms: the Gram matrices of the Bernstein polynomials of degree 3
+  // (second derivatives) and 4 (first derivatives) as U^T U. A face's terms are then sums of
+  // squares |Y x + Y0|^2, Y = (scaled U) (differences L) (slot rows R): differences first,
+  // as thin_plate_energy() does (forming L^T M L first loses thin triangles' energy to
+  // cancellation in double), and Y R costs a few operations per entry of R's about 60.
+  auto gram_factor = [](int degree) {
+    const auto& table = bernstein_gram_table<double>(degree);
+    const Eigen::Index c = Eigen::Index((degree + 1) * (degree + 2) / 2);
+    Eigen::MatrixXd gram(c, c);
+    for (Eigen::Index i = 0; i < c; ++i)
+      for (Eigen::Index j = 0; j < c; ++j)
+        gram(i, j) = table[std::size_t(i * c + j)];
+    return Eigen::MatrixXd(gram.llt().matrixU());
+  };
+  const Eigen::MatrixXd U3 = gram_factor(3), U4 = gram_factor(4);
+  const auto cubic = bernstein_indices(3), quartic = bernstein_indices(4);
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  Rows Y, Y0; // the squares' rows: in the unknowns, and constants
+  Eigen::Matrix<double, 15, 21, Eigen::RowMajor> difference;
+  Rows DR;
+  Eigen::MatrixXd DC(15, D), C(Eigen::Index(n), D);
+  struct Entry {
+    int slot, column; // 0 .. 20, 0 .. k - 1
+    double weight;
+  };
+  std::vector<Entry> entries;
+  auto face_terms = [&](std::uint32_t f, Face_terms& terms) {
     std::array<Slot, n> slot;
+    auto& columns = terms.columns;
     columns.clear();
     for (std::size_t i = 0; i < n; ++i) {
       slot[i] = spline.slot(f, indices[i]);
-      for (const auto& entry : a.rows[slot[i]])
-        if (local[std::size_t(entry.first)] >= 0)
-          columns.push_back(local[std::size_t(entry.first)]);
+      a.for_each_entry(slot[i], [&](int j, double) { columns.push_back(j); });
     }
     if (columns.empty())
       return;
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
     const Eigen::Index k = Eigen::Index(columns.size());
-    // slot values = R (window unknowns) + C (constants and the other unknowns' values)
-    R.setZero(Eigen::Index(n), k);
-    C.setZero(Eigen::Index(n), D);
+    // R as (slot, column, weight) entries; C the slots' constants
+    entries.clear();
     for (std::size_t i = 0; i < n; ++i) {
       for (int d = 0; d < D; ++d)
         C(Eigen::Index(i), d) = a.constant[slot[i]][std::size_t(d)];
-      for (const auto& [j, c] : a.rows[slot[i]]) {
-        const int l = local[std::size_t(j)];
-        if (l >= 0)
-          R(Eigen::Index(i),
-            std::lower_bound(columns.begin(), columns.end(), l) - columns.begin()) += c;
-        else
-          C.row(Eigen::Index(i)) += c * at.row(j);
-      }
+      a.for_each_entry(slot[i], [&](int j, double c) {
+        const auto l = std::lower_bound(columns.begin(), columns.end(), j) - columns.begin();
+        entries.push_back({int(i), int(l), c});
+      });
     }
-    H.setZero(k, k);
-    B.setZero(k, D);
-    if (energy_weight[f] > 0) {
+    const bool energy = energy_weight[f] > 0;
+    const bool tension = !tension_weight.empty() && tension_weight[f] > 0;
+    const std::size_t first_misfit = misfit_start[f], last_misfit = misfit_start[f + 1];
+    const Eigen::Index m =
+        (energy ? 30 : 0) + (tension ? 30 : 0) + Eigen::Index(last_misfit - first_misfit);
+    Y.setZero(m, k);
+    Y0.setZero(m, D);
+    terms.B.setZero(k, D);
+    Eigen::Index row = 0;
+    // rows += scale * U * (difference R), constants likewise (`c` differences)
+    auto add_squares = [&](Eigen::Index c, const Eigen::MatrixXd& U, double scale) {
+      DR.setZero(c, k);
+      for (const auto& e : entries)
+        DR.col(e.column) += e.weight * difference.col(e.slot).head(c);
+      DC.topRows(c).noalias() = difference.topLeftCorner(c, Eigen::Index(n)) * C;
+      Y.middleRows(row, c).noalias() = U.template triangularView<Eigen::Upper>() * DR;
+      Y.middleRows(row, c) *= scale;
+      Y0.middleRows(row, c).noalias() = U.template triangularView<Eigen::Upper>() * DC.topRows(c);
+      Y0.middleRows(row, c) *= scale;
+      row += c;
+    };
+    if (energy || tension) {
       const auto& t = domain.face(f);
-      auto point = [&](std::size_t i) {
-        const auto& p = domain.point(t[i]);
-        return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
-      };
-      // Differences first (L R, L C), then squares: forming the Gram matrix first loses
-      // thin triangles' energy to cancellation in double.
-      const auto factors = thin_plate_energy_factors(5, point(0), point(1), point(2));
-      for (Eigen::Index a1 = 0; a1 < 10; ++a1)
-        for (Eigen::Index a2 = 0; a2 < 10; ++a2)
-          M(a1, a2) = energy_weight[f] * factors.gram[std::size_t(a1 * 10 + a2)];
-      for (int p = 0; p < 3; ++p) {
-        for (Eigen::Index a1 = 0; a1 < 10; ++a1)
-          for (Eigen::Index i = 0; i < Eigen::Index(n); ++i)
-            L(a1, i) = factors.second[std::size_t(p)][std::size_t(a1) * n + std::size_t(i)];
-        const double w = factors.weight[std::size_t(p)];
-        X.noalias() = L * R;
-        MX.noalias() = M * X;
-        H.noalias() += w * (X.transpose() * MX);
-        B.noalias() -= w * (MX.transpose() * (L * C));
-      }
-    }
-    if (!tension_weight.empty() && tension_weight[f] > 0) {
-      const auto& t = domain.face(f);
-      std::array<std::array<double, 2>, 3> corner;
+      std::array<Point, 3> p;
       for (std::size_t i = 0; i < 3; ++i)
-        corner[i] = {
-            {CGAL::to_double(domain.point(t[i]).x()), CGAL::to_double(domain.point(t[i]).y())}};
-      const Tension_factors tf = tension_factors(corner);
-      const double w = tension_weight[f];
-      for (int p = 0; p < 2; ++p) {
-        const auto& e = p == 0 ? tf.ex : tf.ey;
-        X.noalias() = tf.first[p] * R;
-        MX.noalias() = tf.gram * X;
-        H.noalias() += w * (X.transpose() * MX);
-        B.noalias() -= w * (MX.transpose() * (tf.first[p] * C));
-        // - 2 grad g . int grad s: the corners are constants, so g_f comes from them
-        const Eigen::VectorXd column_sums = X.colwise().sum().transpose();
-        for (int d = 0; d < D; ++d) {
-          double g = 0;
-          for (std::size_t i = 0; i < 3; ++i)
-            g += e[i] * a.constant[t[i]][std::size_t(d)];
-          B.col(d) += (w * g * tf.area / 3) * column_sums;
+        p[i] =
+            Point(CGAL::to_double(domain.point(t[i]).x()), CGAL::to_double(domain.point(t[i]).y()));
+      std::array<double, 3> ex, ey;
+      double scale;
+      thin_plate_frame(5, p[0], p[1], p[2], ex, ey, scale);
+      if (energy) {
+        // f_xx, f_xy (weight 2), f_yy: second differences, Gram of degree 3 (scale: the area
+        // and the factor 20^2 of the second derivatives)
+        const std::array<const std::array<double, 3>*, 6> uw{{&ex, &ex, &ex, &ey, &ey, &ey}};
+        for (int q = 0; q < 3; ++q) {
+          difference.setZero();
+          const auto &u = *uw[std::size_t(2 * q)], &w = *uw[std::size_t(2 * q + 1)];
+          for (std::size_t g = 0; g < cubic.size(); ++g)
+            for (int i = 0; i < 3; ++i)
+              for (int j = 0; j < 3; ++j) {
+                Multi_index b = cubic[g];
+                ++b[i];
+                ++b[j];
+                difference(Eigen::Index(g), Eigen::Index(bernstein_position(5, b))) +=
+                    u[std::size_t(i)] * w[std::size_t(j)];
+              }
+          add_squares(10, U3, std::sqrt(energy_weight[f] * scale * (q == 1 ? 2 : 1)));
+        }
+      }
+      if (tension) {
+        // int |grad s - grad g|^2: first differences (f_x = 5 L_x b), Gram of degree 4 over
+        // the face; the cross term -2 grad g . int grad s goes to B (g from the corners,
+        // which are constants here)
+        const double area = std::abs((p[1].x() - p[0].x()) * (p[2].y() - p[0].y()) -
+                                     (p[1].y() - p[0].y()) * (p[2].x() - p[0].x())) /
+                            2;
+        const double w = tension_weight[f];
+        for (int q = 0; q < 2; ++q) {
+          const auto& e = q == 0 ? ex : ey;
+          difference.setZero();
+          for (std::size_t g = 0; g < quartic.size(); ++g)
+            for (int i = 0; i < 3; ++i) {
+              Multi_index b = quartic[g];
+              ++b[i];
+              difference(Eigen::Index(g), Eigen::Index(bernstein_position(5, b))) +=
+                  e[std::size_t(i)];
+            }
+          add_squares(15, U4, std::sqrt(w * 25 * area / 45));
+          const Eigen::RowVectorXd column_sums = DR.topRows(15).colwise().sum();
+          for (int d = 0; d < D; ++d) {
+            double gradient = 0;
+            for (std::size_t i = 0; i < 3; ++i)
+              gradient += e[i] * a.constant[t[i]][std::size_t(d)];
+            terms.B.col(d) += (w * gradient * area / 3) * column_sums.transpose();
+          }
         }
       }
     }
-    for (std::size_t m = misfit_start[f]; m < misfit_start[f + 1]; ++m) {
-      const auto& [s, target] = face_misfits[m];
-      const std::size_t i = std::size_t(std::find(slot.begin(), slot.end(), s) - slot.begin());
-      const auto r = R.row(Eigen::Index(i));
-      H.noalias() += misfit_weight * (r.transpose() * r);
+    const double root = std::sqrt(misfit_weight);
+    for (std::size_t mi = first_misfit; mi < last_misfit; ++mi, ++row) {
+      const auto& [s, target] = face_misfits[mi];
+      const auto i = Eigen::Index(std::find(slot.begin(), slot.end(), s) - slot.begin());
+      for (const auto& e : entries)
+        if (e.slot == i)
+          Y(row, e.column) += root * e.weight;
       for (int d = 0; d < D; ++d)
-        B.col(d) +=
-            misfit_weight * (target[std::size_t(d)] - C(Eigen::Index(i), d)) * r.transpose();
+        Y0(row, d) = root * (C(i, d) - target[std::size_t(d)]);
     }
-    for (Eigen::Index i = 0; i < k; ++i) {
-      for (Eigen::Index j = 0; j < k; ++j)
-        if (H(i, j) != 0)
-          triplets.emplace_back(columns[std::size_t(i)], columns[std::size_t(j)], H(i, j));
-      rhs.row(columns[std::size_t(i)]) += B.row(i);
-    }
+    // the lower triangle only (schwarz_minimise() reads no more): half the products
+    terms.H.setZero(k, k);
+    terms.H.template selfadjointView<Eigen::Lower>().rankUpdate(Y.transpose());
+    terms.B.noalias() -= Y.transpose() * Y0;
   };
   auto neighbours = [&](std::uint32_t v, std::vector<std::uint32_t>& out) {
     const auto [begin, end] = domain.neighbours(v);
@@ -342,7 +443,7 @@ Schwarz_statistics minimise_slot_quadratic(
   };
   const Schwarz_statistics statistics =
       schwarz_minimise(domain.number_of_vertices(), owner, domain.number_of_faces(), unknowns_of,
-                       assemble, neighbours, position, x, options, default_sweeps, what);
+                       face_terms, neighbours, position, x, options, scale, what);
   for (std::size_t j = 0; j < a.unknowns; ++j) {
     std::array<FT, std::size_t(D)> c;
     for (int d = 0; d < D; ++d)
@@ -365,11 +466,11 @@ Schwarz_statistics least_squares_free_values(C1_quintic_spline<GeomTraits, Value
   std::vector<std::pair<std::uint32_t, Value>> misfits;
   misfits.reserve(spline.number_of_slots());
   for (std::size_t s = 0; s < spline.number_of_slots(); ++s)
-    if (!a.rows[s].empty())
+    if (a.has_row(s))
       misfits.emplace_back(std::uint32_t(s), target(static_cast<Slot>(s)));
-  return minimise_slot_quadratic(spline, a,
-                                 std::vector<double>(spline.domain().number_of_faces(), 0), {},
-                                 misfits, 1.0, target, options, 1, "least-squares");
+  return minimise_slot_quadratic(
+      spline, a, std::vector<double>(spline.domain().number_of_faces(), 0), {}, misfits, 1.0,
+      target, options, data_scale(values), "least-squares");
 }
 
 // Minimal thin-plate energy (Fit::MINIMAL_ENERGY): corners fixed to the data, the free slots
@@ -418,10 +519,10 @@ Schwarz_statistics minimal_energy_free_values(C1_quintic_spline<GeomTraits, Valu
   std::vector<std::pair<std::uint32_t, Value>> misfits;
   if (!interpolating)
     for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
-      if (!a.rows[v].empty())
+      if (a.has_row(v))
         misfits.emplace_back(v, values[v]);
   return minimise_slot_quadratic(spline, a, energy_weight, tension_weight, misfits, 1.0, initial,
-                                 options, 2, "minimal-energy");
+                                 options, data_scale(values), "minimal-energy");
 }
 
 } // namespace internal
