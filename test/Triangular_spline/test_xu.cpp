@@ -5,6 +5,7 @@
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangular_spline/internal/face_measures.h>
 #include <CGAL/Triangular_spline/Domain/domain_from_face_graph.h>
 #include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Domain/Domain_locator.h>
@@ -1985,6 +1986,51 @@ TEST(Plan, FaceNetReadsTheSlotsOfThePatch) {
     }
   }
   EXPECT_EQ(seen.size(), spline.number_of_slots());
+}
+
+TEST(Plan, FaceMeasuresAreThePatchsBits) {
+  // internal::face_energy_and_centroid_value() reads the face's net without building the
+  // patch; tspline c1 reports the sum of the energies and the range of the values, which
+  // must not change. Bit for bit against the patch, on every face of: random points
+  // (adaptive fit), the 129^2 grid jittered by 1e-14 (near-singular vertices, thin hull
+  // triangles) and an L-shape with a hole (boundaries), a rational spline too.
+  std::mt19937 engine(5);
+  std::vector<Planar_domain<Epick>> domains;
+  domains.push_back(delaunay_of<Epick>(random_square_points(3000, 29)));
+  domains.push_back(delaunay_of<Epick>(jittered_grid(128, 1e-14, engine)));
+  domains.push_back(l_shape_with_hole<Epick>());
+  std::size_t faces = 0;
+  for (const auto& domain : domains) {
+    std::vector<double> z;
+    for (const auto& p : domain.points())
+      z.push_back(std::exp(p.x()) * std::sin(2 * p.y()) + 0.01 * std::cos(40 * p.x()));
+    C1_quintic_spline<Epick> spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::fit_vertex_data(spline, z, Fit::ADAPTIVE, 5);
+    for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f, ++faces) {
+      const auto measures = TS::internal::face_energy_and_centroid_value(spline, f);
+      ASSERT_TRUE(measures.has_value()) << f;
+      const auto patch = spline.patch(f);
+      EXPECT_EQ(measures->first, TS::thin_plate_energy(patch)) << f;
+      EXPECT_EQ(measures->second,
+                patch.evaluate(CGAL::centroid(patch.vertex(0), patch.vertex(1), patch.vertex(2))))
+          << f;
+    }
+  }
+  EXPECT_GT(faces, 38000u);
+  C1_quintic_spline<Exact_kernel> exact(l_shape_with_hole<Exact_kernel>(),
+                                        Corner_frame::CORNER_AND_TWO_STARS);
+  int next = 1;
+  for (const auto s : exact.free_slots())
+    exact.set_free_value(s, Exact_kernel::FT(next++ % 7, 3));
+  exact.propagate();
+  for (std::uint32_t f = 0; f < exact.domain().number_of_faces(); ++f) {
+    const auto measures = TS::internal::face_energy_and_centroid_value(exact, f);
+    ASSERT_TRUE(measures.has_value());
+    const auto patch = exact.patch(f);
+    EXPECT_EQ(measures->first, TS::thin_plate_energy(patch));
+    EXPECT_EQ(measures->second,
+              patch.evaluate(CGAL::centroid(patch.vertex(0), patch.vertex(1), patch.vertex(2))));
+  }
 }
 
 TEST(Tension, FactorsIntegrateTheGradientExactly) {

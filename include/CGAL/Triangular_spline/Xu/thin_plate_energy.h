@@ -167,6 +167,120 @@ auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, co
   return G;
 }
 
+namespace internal {
+
+// Where the differences of thin_plate_energy_of_net() read, per degree m: for each index of
+// degree m - 1 (fine) the three indices of degree m it adds e_i to, with their positions in
+// bernstein_indices() order; for each index of degree m - 2 (coarse) the positions of its
+// three neighbours of degree m - 1. The same positions in the same order as computing them
+// per call, which took a third of the energy's time.
+struct Thin_plate_difference_tables {
+  std::vector<std::array<Multi_index, 3>> fine;
+  std::vector<std::array<std::size_t, 3>> fine_from;
+  std::vector<Multi_index> coarse;
+  std::vector<std::array<std::size_t, 3>> coarse_from;
+};
+inline Thin_plate_difference_tables make_thin_plate_difference_tables(int m) {
+  auto indices = [](int degree) {
+    std::vector<Multi_index> out;
+    for (int i = degree; i >= 0; --i) // the order of bernstein_indices()
+      for (int j = degree - i; j >= 0; --j)
+        out.push_back({i, j, degree - i - j});
+    return out;
+  };
+  Thin_plate_difference_tables t;
+  for (const Multi_index& to : indices(m - 1)) {
+    std::array<Multi_index, 3> from;
+    std::array<std::size_t, 3> position;
+    for (int i = 0; i < 3; ++i) {
+      from[std::size_t(i)] = to;
+      ++from[std::size_t(i)][i];
+      position[std::size_t(i)] = bernstein_position(m, from[std::size_t(i)]);
+    }
+    t.fine.push_back(from);
+    t.fine_from.push_back(position);
+  }
+  t.coarse = indices(m - 2);
+  for (const Multi_index& to : t.coarse) {
+    std::array<std::size_t, 3> position;
+    for (int i = 0; i < 3; ++i) {
+      Multi_index a = to;
+      ++a[i];
+      position[std::size_t(i)] = bernstein_position(m - 1, a);
+    }
+    t.coarse_from.push_back(position);
+  }
+  return t;
+}
+// Degrees 2 to 8 once (thread-safe), higher ones per call.
+inline const Thin_plate_difference_tables& thin_plate_difference_tables(int m) {
+  constexpr int most = 8;
+  static const std::array<Thin_plate_difference_tables, most - 1> cached = [] {
+    std::array<Thin_plate_difference_tables, most - 1> t;
+    for (int k = 2; k <= most; ++k)
+      t[std::size_t(k - 2)] = make_thin_plate_difference_tables(k);
+    return t;
+  }();
+  if (m <= most)
+    return cached[std::size_t(m - 2)];
+  thread_local Thin_plate_difference_tables other;
+  other = make_thin_plate_difference_tables(m);
+  return other;
+}
+
+// thin_plate_energy() of the degree-m net that at(position, index) reads, over the triangle
+// (r, s, t): the one implementation, so that the patch and the net without a patch
+// (face_energy_and_centroid_value()) give the same bits.
+template <class FT, class Point_2, class At>
+FT thin_plate_energy_of_net(int m, const Point_2& r, const Point_2& s, const Point_2& t,
+                            const At& at) {
+  if (m < 2)
+    return FT(0);
+  std::array<FT, 3> ex, ey;
+  FT scale;
+  internal::thin_plate_frame(m, r, s, t, ex, ey, scale);
+  // Differences first (Farin's directional derivatives, one degree at a time), then squares:
+  // D_x b and D_y b of degree m - 1, then D_xx, D_xy, D_yy of degree m - 2. Up to degree 6
+  // the nets stay on the stack: tspline c1 takes the energy of every patch.
+  using Net = boost::container::small_vector<FT, 28>;
+  const Thin_plate_difference_tables& tables = thin_plate_difference_tables(m);
+  const std::size_t fine = tables.fine.size(), coarse = tables.coarse.size();
+  auto first = [&](const std::array<FT, 3>& e) {
+    Net out(fine, FT(0));
+    for (std::size_t g = 0; g < fine; ++g)
+      for (std::size_t i = 0; i < 3; ++i)
+        out[g] = out[g] + e[i] * at(tables.fine_from[g][i], tables.fine[g][i]);
+    return out;
+  };
+  auto second = [&](const std::array<FT, 3>& e, const Net& v) {
+    Net out(coarse, FT(0));
+    for (std::size_t g = 0; g < coarse; ++g)
+      for (std::size_t i = 0; i < 3; ++i)
+        out[g] = out[g] + e[i] * v[tables.coarse_from[g][i]];
+    return out;
+  };
+  const Net dx = first(ex);
+  const Net dy = first(ey);
+  const std::array<Net, 3> second_differences{{second(ex, dx), second(ey, dx), second(ey, dy)}};
+  const std::vector<FT>& table = internal::bernstein_gram_table<FT>(m - 2);
+  const std::size_t c = coarse;
+  FT energy(0);
+  for (int p = 0; p < 3; ++p) {
+    const Net& d = second_differences[std::size_t(p)];
+    FT quadratic(0);
+    for (std::size_t a = 0; a < c; ++a) {
+      FT row(0);
+      for (std::size_t e = 0; e < c; ++e)
+        row = row + table[a * c + e] * d[e];
+      quadratic = quadratic + d[a] * row;
+    }
+    energy = energy + FT(Thin_plate_energy_factors<FT>::weight[std::size_t(p)]) * quadratic;
+  }
+  return scale * energy;
+}
+
+} // namespace internal
+
 /*!
   \ingroup PkgTriangularSplineSplines
   \brief returns the thin-plate energy \f$\int f_{xx}^2 + 2 f_{xy}^2 + f_{yy}^2\f$ of a
@@ -181,61 +295,9 @@ auto thin_plate_energy_matrix(int degree, const Point_2& r, const Point_2& s, co
 template <class GeomTraits>
 typename GeomTraits::FT thin_plate_energy(const Bezier_triangle<GeomTraits>& patch) {
   using FT = typename GeomTraits::FT;
-  const int m = patch.degree();
-  if (m < 2)
-    return FT(0);
-  std::array<FT, 3> ex, ey;
-  FT scale;
-  internal::thin_plate_frame(m, patch.vertex(0), patch.vertex(1), patch.vertex(2), ex, ey, scale);
-  // Differences first (Farin's directional derivatives, one degree at a time), then squares:
-  // D_x b and D_y b of degree m - 1, then D_xx, D_xy, D_yy of degree m - 2. Up to degree 6
-  // the nets stay on the stack: tspline c1 takes the energy of every patch.
-  using Indices = boost::container::small_vector<Multi_index, 28>;
-  using Net = boost::container::small_vector<FT, 28>;
-  auto indices = [](int degree) {
-    Indices out;
-    for (int i = degree; i >= 0; --i) // the order of bernstein_indices()
-      for (int j = degree - i; j >= 0; --j)
-        out.push_back({i, j, degree - i - j});
-    return out;
-  };
-  const Indices fine = indices(m - 1), coarse = indices(m - 2);
-  auto difference = [](const std::array<FT, 3>& e, const Indices& to, int from, auto&& at) {
-    Net out(to.size(), FT(0));
-    for (std::size_t g = 0; g < to.size(); ++g)
-      for (int i = 0; i < 3; ++i) {
-        Multi_index a = to[g];
-        ++a[i];
-        out[g] = out[g] + e[std::size_t(i)] * at(internal::bernstein_position(from, a), a);
-      }
-    return out;
-  };
-  auto from_patch = [&](std::size_t, const Multi_index& a) -> const FT& {
-    return patch.control_point(a);
-  };
-  const Net dx = difference(ex, fine, m, from_patch);
-  const Net dy = difference(ey, fine, m, from_patch);
-  auto of = [](const Net& v) {
-    return [&v](std::size_t i, const Multi_index&) -> const FT& { return v[i]; };
-  };
-  const std::array<Net, 3> second{{difference(ex, coarse, m - 1, of(dx)),
-                                   difference(ey, coarse, m - 1, of(dx)),
-                                   difference(ey, coarse, m - 1, of(dy))}};
-  const std::vector<FT>& table = internal::bernstein_gram_table<FT>(m - 2);
-  const std::size_t c = coarse.size();
-  FT energy(0);
-  for (int p = 0; p < 3; ++p) {
-    const Net& d = second[std::size_t(p)];
-    FT quadratic(0);
-    for (std::size_t a = 0; a < c; ++a) {
-      FT row(0);
-      for (std::size_t e = 0; e < c; ++e)
-        row = row + table[a * c + e] * d[e];
-      quadratic = quadratic + d[a] * row;
-    }
-    energy = energy + FT(Thin_plate_energy_factors<FT>::weight[std::size_t(p)]) * quadratic;
-  }
-  return scale * energy;
+  return internal::thin_plate_energy_of_net<FT>(
+      patch.degree(), patch.vertex(0), patch.vertex(1), patch.vertex(2),
+      [&](std::size_t, const Multi_index& a) -> const FT& { return patch.control_point(a); });
 }
 
 } // namespace Triangular_spline

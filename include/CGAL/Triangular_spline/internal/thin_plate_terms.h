@@ -40,34 +40,51 @@ inline std::size_t bernstein_position(int m, const Multi_index& a) {
 // the triangle, so it is computed once per number type and degree (the energy of 10^6
 // patches recomputed it from factorials every time).
 template <class FT>
+std::vector<FT> compute_bernstein_gram_table(int d) {
+  auto factorial = [](int k) -> FT {
+    FT f(1);
+    for (int i = 2; i <= k; ++i)
+      f = f * FT(i);
+    return f;
+  };
+  auto multinomial = [&](int m, const Multi_index& a) -> FT {
+    return factorial(m) / (factorial(a.i) * factorial(a.j) * factorial(a.k));
+  };
+  const auto coarse = bernstein_indices(d);
+  const std::size_t c = coarse.size();
+  std::vector<FT> table(c * c);
+  for (std::size_t a = 0; a < c; ++a)
+    for (std::size_t b = 0; b < c; ++b) {
+      const Multi_index sum{coarse[a].i + coarse[b].i, coarse[a].j + coarse[b].j,
+                            coarse[a].k + coarse[b].k};
+      table[a * c + b] =
+          multinomial(d, coarse[a]) * multinomial(d, coarse[b]) / multinomial(2 * d, sum);
+    }
+  return table;
+}
+
+template <class FT>
 const std::vector<FT>& bernstein_gram_table(int d) {
+  // Degrees below 8 without a lock (tspline c1 reads the table for every face, on all cores;
+  // the mutex cost more than the table's use), the others cached under the mutex.
+  constexpr int small = 8;
+  if (0 <= d && d < small) {
+    static const std::array<std::vector<FT>, small> tables = [] {
+      std::array<std::vector<FT>, small> t;
+      for (int k = 0; k < small; ++k)
+        t[std::size_t(k)] = compute_bernstein_gram_table<FT>(k);
+      return t;
+    }();
+    return tables[std::size_t(d)];
+  }
   static std::mutex mutex;
   static std::vector<std::unique_ptr<const std::vector<FT>>> tables;
   const std::lock_guard<std::mutex> lock(mutex);
   if (tables.size() <= std::size_t(d))
     tables.resize(std::size_t(d) + 1);
-  if (!tables[std::size_t(d)]) {
-    auto factorial = [](int k) -> FT {
-      FT f(1);
-      for (int i = 2; i <= k; ++i)
-        f = f * FT(i);
-      return f;
-    };
-    auto multinomial = [&](int m, const Multi_index& a) -> FT {
-      return factorial(m) / (factorial(a.i) * factorial(a.j) * factorial(a.k));
-    };
-    const auto coarse = bernstein_indices(d);
-    const std::size_t c = coarse.size();
-    auto table = std::make_unique<std::vector<FT>>(c * c);
-    for (std::size_t a = 0; a < c; ++a)
-      for (std::size_t b = 0; b < c; ++b) {
-        const Multi_index sum{coarse[a].i + coarse[b].i, coarse[a].j + coarse[b].j,
-                              coarse[a].k + coarse[b].k};
-        (*table)[a * c + b] =
-            multinomial(d, coarse[a]) * multinomial(d, coarse[b]) / multinomial(2 * d, sum);
-      }
-    tables[std::size_t(d)] = std::move(table);
-  }
+  if (!tables[std::size_t(d)])
+    tables[std::size_t(d)] =
+        std::make_unique<const std::vector<FT>>(compute_bernstein_gram_table<FT>(d));
   return *tables[std::size_t(d)];
 }
 
