@@ -4,14 +4,14 @@
 
   dimension  `tspline c1 --dimension`: the stage 'dimension' of the report (exact plan check
              + rank modulo a prime), and the argument that proved it;
-  exact      `tspline c1 --exact`: faces per second of the whole process (wall and CPU), and
-             of the certificate stage alone.
+  exact      `tspline c1 --exact --fit FIT` (default: the default fit, adaptive): faces per
+             second of the whole process (wall and CPU), and of the certificate stage alone.
 
 Every run is a whole process; the machine may be shared, so CPU time (user + system of the
 child) is printed beside the wall time, and each figure is the median of --repeats runs.
 
 usage: benchmark/exact_paths.py [--cli build/src/tspline/tspline] [--repeats 3]
-       [--dimension 30,50,100,1000,10000] [--exact 1000,10000,30000]
+       [--dimension 30,50,100,1000,10000] [--exact 1000,3000,10000] [--fit adaptive]
 """
 import argparse
 import json
@@ -47,7 +47,8 @@ def main():
     parser.add_argument("--cli", default="build/src/tspline/tspline")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--dimension", default="30,50,100,1000,10000")
-    parser.add_argument("--exact", default="1000,10000,30000")
+    parser.add_argument("--exact", default="1000,3000,10000")
+    parser.add_argument("--fit", default="adaptive")
     a = parser.parse_args()
     sizes = lambda s: [int(x) for x in s.split(",") if x]
     with tempfile.TemporaryDirectory() as tmp:
@@ -71,7 +72,8 @@ def main():
             write_points(points, n)
             rows = []
             for _ in range(a.repeats):
-                w, c = run(a.cli, ["c1", "--input", points, "--exact", "--report", report])
+                w, c = run(a.cli, ["c1", "--input", points, "--exact", "--fit", a.fit,
+                                   "--report", report])
                 r = json.load(open(report))
                 rows.append((w, c, r["timings_seconds"]["certify"], r["faces"], r["timings_seconds"]))
             wall = statistics.median(x[0] for x in rows)
@@ -79,7 +81,7 @@ def main():
             certify = statistics.median(x[2] for x in rows)
             faces = rows[0][3]
             stages = ", ".join(f"{k} {v:.2f}" for k, v in rows[-1][4].items())
-            print(f"exact n={n} ({faces} faces): {faces / wall:.0f} faces/s wall, "
+            print(f"exact --fit {a.fit} n={n} ({faces} faces): {faces / wall:.0f} faces/s wall, "
                   f"{faces / cpu:.0f} faces/s cpu, certificate {faces / certify:.0f} faces/s; "
                   f"stages (s): {stages}", flush=True)
 

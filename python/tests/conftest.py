@@ -22,8 +22,8 @@ def data_dir():
 @pytest.fixture
 def dyadic():
     """40 points on the 1/32 grid with values rounded to 1/1024: short rationals, so that
-    exact builds take a second (each random double is a 53-bit rational, and the adaptive
-    fit's exact least squares on 40 of them takes over a minute)."""
+    exact builds are quick (each random double is a 53-bit rational, and the adaptive
+    fit's exact local polynomials on 40 of them take half a second)."""
     rng = np.random.default_rng(7)
     p = np.unique(np.round(rng.random((60, 2)) * 32) / 32, axis=0)[:40]
     return p, np.round(np.exp(p[:, 0]) * np.sin(2 * p[:, 1]) * 1024) / 1024

@@ -212,16 +212,22 @@ Json run(const C1_job& job, std::ostream& out) {
   timings["read_and_triangulate"] = clock.lap();
   memory["read_and_triangulate"] = peak_memory_mb();
   cpu["read_and_triangulate"] = cpu_clock.lap();
-  // About a second of work from here on: 10^5 triangles exact, 10^6 in double.
-  const bool large = input.domain.number_of_faces() > (job.exact ? 20000u : 300000u);
-  // Exact arithmetic runs at several thousand triangles per second (issue 12): say what to
-  // expect before a long silence.
-  if (job.exact && input.domain.number_of_faces() > 50000u)
-    std::cerr << "tspline c1: note: --exact on " << input.domain.number_of_faces()
-              << " triangles takes about "
-              << format_number(input.domain.number_of_faces() / 5000.0 / 60.0)
-              << " minutes (about 5000 triangles per second); the double build takes seconds and "
-                 "reports its round-off\n";
+  // Exact arithmetic (issue 12): about 5000 triangles per second with the fits that read
+  // values and gradients; with the local polynomials' exact coefficients, about 200 on full
+  // double mantissas (coefficients of thousands of digits), 3000 on 6-decimal data. Say what
+  // to expect, at worst, before a long silence.
+  const double exact_rate =
+      job.fit == "adaptive" || job.fit == "local" || job.fit == "lsq" ? 200.0 : 5000.0;
+  // A few seconds of work from here on: 4 * exact_rate triangles exact, 10^6 in double.
+  const bool large =
+      double(input.domain.number_of_faces()) > (job.exact ? 4 * exact_rate : 300000.0);
+  if (job.exact && input.domain.number_of_faces() > 10 * exact_rate)
+    std::cerr << "tspline c1: note: --exact --fit " << job.fit << " on "
+              << input.domain.number_of_faces() << " triangles may take "
+              << format_number(input.domain.number_of_faces() / exact_rate / 60.0)
+              << " minutes (about " << exact_rate
+              << " triangles per second on data with full double mantissas, faster on short "
+                 "decimals); the double build takes seconds and reports its round-off\n";
   const std::size_t input_vertices = input.domain.number_of_vertices();
 
   // Degenerate frames are re-routed by the plan; the perturbation fix moves vertices first.

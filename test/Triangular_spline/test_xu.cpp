@@ -922,6 +922,124 @@ TEST(LocalFit, ReproducesCubicsExactlyWithEitherDegreeRule) {
   }
 }
 
+namespace {
+// The domain of n scattered doubles of the unit square, exactly.
+Planar_domain<Exact_kernel> exact_square_domain(std::size_t n, unsigned seed) {
+  std::vector<Exact_kernel::Point_2> points;
+  for (const auto& p : random_square_points(n, seed))
+    points.emplace_back(p.x(), p.y());
+  return delaunay_of<Exact_kernel>(points);
+}
+
+// exp(x) sin(2y) rounded to double at each vertex: data as real files give them.
+std::vector<Exact_kernel::FT> exp_sin_doubles(const Planar_domain<Exact_kernel>& domain) {
+  std::vector<Exact_kernel::FT> z;
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    const double x = CGAL::to_double(domain.point(v).x()), y = CGAL::to_double(domain.point(v).y());
+    z.emplace_back(std::exp(x) * std::sin(2 * y));
+  }
+  return z;
+}
+} // namespace
+
+TEST(LocalFit, FractionFreeEliminationGivesTheRationalEliminationsNumbers) {
+  // Scattered doubles and values of a smooth function, exactly: the fraction-free solve
+  // (integers, exact divisions, numerators over one denominator per vertex) and Gauss-Jordan
+  // elimination in rationals give the same polynomials: equal degrees, gradients and polar
+  // values, exactly, for heights and for vectors (each coordinate its own denominator).
+  using FT = Exact_kernel::FT;
+  using Vector = Exact_kernel::Vector_3;
+  const auto domain = exact_square_domain(40, 77);
+  const std::vector<FT> z = exp_sin_doubles(domain);
+  std::vector<Vector> vz;
+  for (Index v = 0; v < domain.number_of_vertices(); ++v)
+    vz.emplace_back(z[v], z[v] * domain.point(v).x() - 3, FT(std::cos(double(v))));
+  const auto rule = TS::Degree_selection::CROSS_VALIDATION;
+  const TS::Local_polynomials<Exact_kernel> fast(domain, z, 3, rule, 0);
+  const TS::Local_polynomials<Exact_kernel> slow(domain, z, 3, rule, 1,
+                                                 TS::Exact_elimination::RATIONAL);
+  const TS::Local_polynomials<Exact_kernel, Vector> fast3(domain, vz, 2, rule, 0);
+  const TS::Local_polynomials<Exact_kernel, Vector> slow3(domain, vz, 2, rule, 1,
+                                                          TS::Exact_elimination::RATIONAL);
+  std::size_t cubic = 0, compared = 0;
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    ASSERT_EQ(fast.degree(v), slow.degree(v));
+    ASSERT_EQ(fast3.degree(v), slow3.degree(v));
+    cubic += fast.degree(v) == 3;
+    EXPECT_EQ(fast.gradient(v), slow.gradient(v)) << v;
+    EXPECT_EQ(fast3.gradient(v), slow3.gradient(v)) << v;
+    const auto [nb, ne] = domain.neighbours(v);
+    for (auto w = nb; w != ne; ++w) {
+      // the labels of the slots v's polynomial sets: (v^3 w^2), (v^4 w), (v^2 w^2 u), ...
+      const auto& pv = domain.point(v);
+      const auto& pw = domain.point(*w);
+      const auto& pu = domain.point(*(w + 1 == ne ? nb : w + 1));
+      using Label = std::pair<const Exact_kernel::Point_2*, int>;
+      for (const auto& label :
+           {std::vector<Label>{{&pv, 3}, {&pw, 2}}, std::vector<Label>{{&pv, 4}, {&pw, 1}},
+            std::vector<Label>{{&pv, 2}, {&pw, 2}, {&pu, 1}},
+            std::vector<Label>{{&pw, 3}, {&pu, 2}}}) {
+        EXPECT_EQ(fast.polar_value(v, label.begin(), label.end(), 5),
+                  slow.polar_value(v, label.begin(), label.end(), 5))
+            << v;
+        EXPECT_EQ(fast3.polar_value(v, label.begin(), label.end(), 5),
+                  slow3.polar_value(v, label.begin(), label.end(), 5))
+            << v;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(cubic, domain.number_of_vertices() / 2); // the cubic path is the one exercised
+  EXPECT_GT(compared, 400u);
+  // Exact and double builds agree to rounding: the exact weights are the double ones. The
+  // fits' columns are determined to at least 1e-6 of their lengths, so rounding grows by at
+  // most about 1e6: 1e-9 of the data's size (|z| <= e) leaves a margin of 10^3.
+  std::vector<Epick::Point_2> points;
+  std::vector<double> fast_z;
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    points.emplace_back(CGAL::to_double(domain.point(v).x()), CGAL::to_double(domain.point(v).y()));
+    fast_z.push_back(CGAL::to_double(z[v]));
+  }
+  const Planar_domain<Epick> double_domain(points, [&] {
+    std::vector<std::array<Index, 3>> faces;
+    for (Index f = 0; f < domain.number_of_faces(); ++f)
+      faces.push_back(domain.face(f));
+    return faces;
+  }());
+  const TS::Local_polynomials<Epick> inexact(double_domain, fast_z, 3, rule);
+  for (Index f = 0; f < domain.number_of_faces(); ++f) {
+    const auto& t = domain.face(f);
+    const auto c = CGAL::centroid(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+    const Epick::Point_2 dc(CGAL::to_double(c.x()), CGAL::to_double(c.y()));
+    for (Index v : t) {
+      ASSERT_EQ(inexact.degree(v), fast.degree(v));
+      EXPECT_NEAR(inexact.value(v, dc), CGAL::to_double(fast.value(v, c)), 1e-9 * std::exp(1.0))
+          << v;
+    }
+  }
+}
+
+TEST(LocalFit, ReproducesQuinticsExactlyFromScatteredDoubles) {
+  // The exact build at degree 5 on coordinates with full double mantissas (integers of about
+  // 60 bits after scaling, coefficients of thousands of digits): where a vertex fits degree
+  // 5, its polynomial IS the quintic, at rational points off the data.
+  const auto domain = exact_square_domain(120, 31);
+  Random_rationals random(8);
+  const auto quintic = random.polynomial<Exact_kernel>(5);
+  const TS::Local_polynomials<Exact_kernel> local(domain, sample(domain, quintic), 5);
+  std::size_t checked = 0;
+  for (Index f = 0; f < domain.number_of_faces(); ++f) {
+    const auto& t = domain.face(f);
+    const auto c = CGAL::centroid(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
+    for (Index v : t)
+      if (local.degree(v) == 5) {
+        EXPECT_EQ(local.value(v, c), quintic.evaluate(c)) << v;
+        ++checked;
+      }
+  }
+  EXPECT_GT(checked, domain.number_of_faces());
+}
+
 TEST(LocalFit, ReproducesQuinticsWhereTheDataDetermineThem) {
   // Degree 5: interior vertices of 120 points have the 30 neighbours a quintic needs; the
   // double build reproduces a random quintic to rounding on every face whose corners and

@@ -9,6 +9,7 @@
 #include <CGAL/Triangular_spline/exceptions.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
+#include <CGAL/Fraction_traits.h>
 
 #include <boost/container/static_vector.hpp>
 
@@ -20,6 +21,7 @@
 #include <limits>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -37,6 +39,19 @@ enum class Degree_selection {
   /// the neighbourhood (weighted mean square) are within 10% of the best degree's; smooth
   /// data get high degrees, rough data low ones
   CROSS_VALIDATION
+};
+
+/*!
+  \ingroup PkgTriangularSplineSplines
+  \brief how `Local_polynomials` solves its normal equations with an exact number type.
+*/
+enum class Exact_elimination {
+  /// over the integers of the number type's fractions (`Fraction_traits`): exact divisions
+  /// only (Bareiss), the coefficients kept as numerators over one denominator per vertex;
+  /// rational elimination for number types without `Fraction_traits`
+  FRACTION_FREE,
+  /// Gauss-Jordan elimination in the number type itself (a gcd per operation with GMP)
+  RATIONAL
 };
 
 /*!
@@ -66,7 +81,10 @@ enum class Degree_selection {
   data, the boundary and points near a conic lower it, down to 1 (a plane, two neighbours suffice)
   and 0 (a constant). The decision is taken in `double` for every number type, so double and exact
   builds choose the same degrees; the coefficients are then solved in `FT` (normal equations by
-  exact elimination for exact number types, the QR for inexact ones).
+  exact elimination for exact number types, the QR for inexact ones). Exact builds weight each
+  point by \f$1/|w-v|^2\f$ rounded to `double` (any positive weights reproduce the
+  polynomial the data come from; a double is a short fraction), so exact and double builds
+  agree to rounding.
 
   <b>Stability.</b> Leave-one-out cannot see what a fit does between the points where they
   lie on a few nearly parallel lines (a nearly straight hull, the last columns of a jittered
@@ -79,8 +97,12 @@ enum class Degree_selection {
 
   <b>Cost.</b> \f$O(V)\f$ time and memory: a bounded neighbourhood and one Householder QR
   per set of points (three), whose leading columns give the fit and the leave-one-out score of
-  every degree sharing those points. Inexact number types fit large inputs on all
-  cores.
+  every degree sharing those points. Large inputs are fitted on all cores. With an exact
+  number type that has `Fraction_traits` (GMP's rationals), the normal equations are solved
+  fraction-free in its integers and each coefficient is kept as a numerator over a common
+  denominator per vertex, from which `polar_value()` sums in integers: about 4 ms per
+  quintic vertex for scattered `double` data, whose exact coefficients run to thousands of
+  digits (rational elimination: about half a second).
 
   \tparam GeomTraits a model of `Kernel`
   \tparam Value `GeomTraits::FT` or a vector type, see `Value_traits`
@@ -109,11 +131,16 @@ public:
     \param max_degree the largest degree of a local polynomial
     \param selection the rule choosing the degree of each local polynomial
     \param threads the number of threads (0: automatic)
+    \param elimination how exact number types solve the normal equations: over the integers
+    of their fractions where they have `Fraction_traits` (the default and the fast way), or
+    by rational elimination (for tests: both give the same rationals)
   */
   Local_polynomials(const Domain& domain, const std::vector<Value>& values, int max_degree = 3,
                     Degree_selection selection = Degree_selection::CROSS_VALIDATION,
-                    std::size_t threads = 0)
-      : m_domain(&domain), m_max_degree(max_degree), m_selection(selection) {
+                    std::size_t threads = 0,
+                    Exact_elimination elimination = Exact_elimination::FRACTION_FREE)
+      : m_domain(&domain), m_max_degree(max_degree), m_selection(selection),
+        m_fraction_free(elimination == Exact_elimination::FRACTION_FREE) {
     if (values.size() != domain.number_of_vertices())
       throw Invalid_input("local fit: " + std::to_string(values.size()) + " data values for " +
                           std::to_string(domain.number_of_vertices()) + " vertices");
@@ -125,12 +152,18 @@ public:
     m_resolution.assign(V, 1.0);
     m_scale.assign(V, FT(1));
     m_coefficients.assign(V * coefficients_per_vertex, Value_traits<Value>::zero());
+    if constexpr (fraction_free) {
+      if (m_fraction_free) {
+        m_numerators.assign(V * coefficients_per_vertex * D, Integer(0));
+        m_denominators.assign(V * D, Integer(0));
+      }
+    }
     // The fits are independent: one thread per core on large inputs (each vertex's result
-    // does not depend on the partition, so output is deterministic). Exact builds stay on
-    // one thread: their fits are small and the rational arithmetic allocates.
+    // does not depend on the partition, so output is deterministic). An exact fit costs
+    // milliseconds, so exact builds go parallel from a few hundred vertices.
     if (threads == 0) {
       const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
-      threads = exact ? 1 : (std::min)(cores, V / 2000 + 1);
+      threads = (std::min)(cores, V / (exact ? 128 : 2000) + 1);
     }
     auto fit_range = [&](std::size_t first) {
       Workspace work;
@@ -222,6 +255,9 @@ public:
           }
       }
     }
+    if constexpr (fraction_free)
+      if (has_fraction(v))
+        return polar_value_fraction_free(v, e, (std::min)(d, passes), n);
     Value sum = m_coefficients[coefficients_per_vertex * std::size_t(v)];
     for (int h = 0; h <= d; ++h)
       for (int k = 0; h + k <= d; ++k) {
@@ -241,6 +277,9 @@ public:
   /// \param v the index of a vertex
   /// \returns the gradient of \f$p_v\f$ at \f$v\f$
   std::array<Value, 2> gradient(Index v) const {
+    if constexpr (fraction_free)
+      if (has_fraction(v))
+        return {{m_scale[v] * fraction(v, 1, 0), m_scale[v] * fraction(v, 0, 1)}};
     return {{m_scale[v] * coefficient(v, 1, 0), m_scale[v] * coefficient(v, 0, 1)}};
   }
 
@@ -249,6 +288,11 @@ private:
       (max_supported_degree + 1) * (max_supported_degree + 2) / 2;
   static constexpr int D = Value_traits<Value>::dimension;
   static constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
+  // Exact number types that are fractions of an integer type fit over those integers.
+  static constexpr bool fraction_free =
+      std::is_same_v<typename Fraction_traits<FT>::Is_fraction, Tag_true>;
+  using Integer =
+      std::conditional_t<fraction_free, typename Fraction_traits<FT>::Numerator_type, char>;
   // Interior vertices reach twice the points a quintic needs within four rings; corners of
   // the domain see a quarter of each ring and need more.
   static constexpr int max_rings = 8;
@@ -277,6 +321,64 @@ private:
     return table[n][k];
   }
   static int unknowns(int d) { return (d + 1) * (d + 2) / 2 - 1; }
+
+  // Whether v's coefficients of degree >= 1 are kept as numerators over a common
+  // denominator (then only there: reducing each fraction costs a gcd of thousands of digits).
+  bool has_fraction(Index v) const {
+    return !m_denominators.empty() && !CGAL::is_zero(m_denominators[std::size_t(v) * D]);
+  }
+  // The coefficient of xi^h eta^k of such a vertex.
+  Value fraction(Index v, int h, int k) const {
+    typename Fraction_traits<FT>::Compose compose;
+    std::array<FT, std::size_t(D)> cs;
+    for (int j = 0; j < D; ++j)
+      cs[std::size_t(j)] =
+          compose(m_numerators[(coefficients_per_vertex * std::size_t(v) + position(h, k)) * D +
+                               std::size_t(j)],
+                  m_denominators[std::size_t(v) * D + std::size_t(j)]);
+    return Value_traits<Value>::from_coordinates(cs);
+  }
+
+  // polar_value() from the numerators over the vertex's common denominator: the factors
+  // e[h][k] / C(n; h, k) are brought to one small denominator, the sum is taken in integers,
+  // and one fraction is formed per coordinate (a rational sum would reduce every partial
+  // sum against the coefficients' denominators of thousands of digits).
+  template <class Table>
+  Value polar_value_fraction_free(Index v, const Table& e, int top, int n) const {
+    using FTr = Fraction_traits<FT>;
+    typename FTr::Decompose decompose;
+    typename FTr::Compose compose;
+    const auto gcd = typename Algebraic_structure_traits<Integer>::Gcd();
+    const auto divide = typename Algebraic_structure_traits<Integer>::Integral_division();
+    std::array<Integer, coefficients_per_vertex> p, q;
+    Integer common(1);
+    for (int t = 1; t <= top; ++t)
+      for (int h = 0; h <= t; ++h) {
+        const int k = t - h;
+        const std::size_t i = position(h, k);
+        decompose(e[std::size_t(h)][std::size_t(k)] / FT(binomial(n, h) * binomial(n - h, k)), p[i],
+                  q[i]);
+        if (!CGAL::is_zero(p[i]))
+          common = divide(common, gcd(common, q[i])) * q[i];
+      }
+    std::array<FT, std::size_t(D)> cs;
+    const Value& constant = m_coefficients[coefficients_per_vertex * std::size_t(v)];
+    for (int j = 0; j < D; ++j) {
+      Integer sum(0);
+      for (int t = 1; t <= top; ++t)
+        for (int h = 0; h <= t; ++h) {
+          const std::size_t i = position(h, t - h);
+          if (!CGAL::is_zero(p[i]))
+            sum +=
+                p[i] * divide(common, q[i]) *
+                m_numerators[(coefficients_per_vertex * std::size_t(v) + i) * D + std::size_t(j)];
+        }
+      cs[std::size_t(j)] =
+          Value_traits<Value>::coordinate(constant, j) +
+          compose(sum, common * m_denominators[std::size_t(v) * D + std::size_t(j)]);
+    }
+    return Value_traits<Value>::from_coordinates(cs);
+  }
   // Position of x^h y^k in the per-vertex coefficient block (by total degree, then h).
   static std::size_t position(int h, int k) {
     const int t = h + k;
@@ -936,10 +1038,146 @@ private:
     m_degree[v] = 0;
   }
 
-  // Normal equations sum w a a^T x = sum w a (z - z_v) with w = 1/|xi|^2, solved by exact
-  // Gaussian elimination; false if singular (never expected after the double rank test).
+  // The weight of a point at scaled offset (xi, eta): 1/|xi|^2 rounded to double, taken
+  // exactly. Any positive weights reproduce the polynomial the data come from, and a dyadic
+  // weight keeps the normal equations' integers short; exact 1/|xi|^2 only if the double
+  // is not a normal positive number.
+  static FT exact_weight(const FT& xi, const FT& eta) {
+    const double x = CGAL::to_double(xi), y = CGAL::to_double(eta);
+    const double w = 1 / (x * x + y * y);
+    if (std::isnormal(w) && w > 0)
+      return FT(w);
+    return FT(1) / (xi * xi + eta * eta);
+  }
+
+  // Normal equations sum w a a^T x = sum w a (z - z_v), w = exact_weight(); false if
+  // singular (never expected after the double rank test). Number types with
+  // Fraction_traits are solved over their integers (solve_fraction_free()), others by
+  // rational Gaussian elimination.
   bool solve_exact(Index v, const std::vector<Value>& values, const std::vector<Index>& points,
                    std::size_t n, int d, const FT& inverse_scale) {
+    if constexpr (fraction_free)
+      if (m_fraction_free)
+        return solve_fraction_free(v, values, points, n, d, inverse_scale);
+    return solve_rational(v, values, points, n, d, inverse_scale);
+  }
+
+  // Fraction-free (Bareiss) elimination: the offsets, weights and values are brought to
+  // common denominators, the normal equations are built and eliminated in integers with
+  // exact divisions only, and the coefficients stay numerators over one denominator (not
+  // reduced: polar_value_fraction_free() reads them so). The same rationals as
+  // solve_rational(), without a gcd per operation: at degree 5 on scattered doubles, about
+  // 4 ms per vertex against half a second.
+  bool solve_fraction_free(Index v, const std::vector<Value>& values,
+                           const std::vector<Index>& points, std::size_t n, int d,
+                           const FT& inverse_scale) {
+    using FTr = Fraction_traits<FT>;
+    static_assert(std::is_same_v<Integer, typename FTr::Denominator_type>);
+    typename FTr::Decompose decompose;
+    const auto gcd = typename Algebraic_structure_traits<Integer>::Gcd();
+    const auto divide = typename Algebraic_structure_traits<Integer>::Integral_division();
+    const auto lcm = [&](const Integer& a, const Integer& b) -> Integer {
+      return divide(a, gcd(a, b)) * b;
+    };
+    const int u = unknowns(d);
+    const Point_2& c = m_domain->point(v);
+    // numerators and denominators: xi, eta, weight, then the D value differences
+    const std::size_t K = 3 + std::size_t(D);
+    std::vector<Integer> num(n * K), den(n * K);
+    std::array<Integer, 3 + std::size_t(D)> common; // xi and eta share common[0]
+    common.fill(Integer(1));
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point_2& p = m_domain->point(points[i]);
+      const FT xi = (p.x() - c.x()) * inverse_scale, eta = (p.y() - c.y()) * inverse_scale;
+      std::array<FT, 3 + std::size_t(D)> q;
+      q[0] = xi;
+      q[1] = eta;
+      q[2] = exact_weight(xi, eta);
+      for (int j = 0; j < D; ++j)
+        q[3 + std::size_t(j)] = Value_traits<Value>::coordinate(values[points[i]], j) -
+                                Value_traits<Value>::coordinate(values[v], j);
+      for (std::size_t k = 0; k < K; ++k) {
+        decompose(q[k], num[i * K + k], den[i * K + k]);
+        Integer& l = common[k == 0 ? 1 : k];
+        l = lcm(l, den[i * K + k]);
+      }
+    }
+    common[0] = common[1] = lcm(common[0], common[1]);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t k = 0; k < K; ++k)
+        num[i * K + k] *= divide(common[k], den[i * K + k]);
+    // augmented normal equations [G | h], G = sum W A A^T, h = sum W A Z in the integer
+    // offsets X = xi L (A the monomials of X, Y), weights W and values Z
+    const std::size_t width = std::size_t(u + D);
+    std::vector<Integer> G(std::size_t(u) * width, Integer(0));
+    std::vector<Integer> A(static_cast<std::size_t>(u)), WA(static_cast<std::size_t>(u));
+    std::array<Integer, max_supported_degree + 1> xp, yp;
+    for (std::size_t i = 0; i < n; ++i) {
+      xp[0] = yp[0] = Integer(1);
+      for (int e = 1; e <= d; ++e) {
+        xp[std::size_t(e)] = xp[std::size_t(e - 1)] * num[i * K];
+        yp[std::size_t(e)] = yp[std::size_t(e - 1)] * num[i * K + 1];
+      }
+      for (int t = 1, col = 0; t <= d; ++t)
+        for (int k = 0; k <= t; ++k, ++col) {
+          A[std::size_t(col)] = xp[std::size_t(t - k)] * yp[std::size_t(k)];
+          WA[std::size_t(col)] = num[i * K + 2] * A[std::size_t(col)];
+        }
+      for (int r = 0; r < u; ++r) {
+        Integer* row = &G[std::size_t(r) * width];
+        for (int s = r; s < u; ++s)
+          row[s] += WA[std::size_t(r)] * A[std::size_t(s)];
+        for (int j = 0; j < D; ++j)
+          row[u + j] += WA[std::size_t(r)] * num[i * K + 3 + std::size_t(j)];
+      }
+    }
+    // Bareiss on the upper triangle: after step k, entry (r, s) of the trailing block is the
+    // (k+1)-minor of G bordered by row r and column s, so the block stays symmetric and the
+    // division by the previous pivot is exact. G is positive semidefinite, so a zero pivot (a
+    // singular leading block) means G is singular: no pivoting.
+    Integer previous(1);
+    for (int k = 0; k < u; ++k) {
+      const Integer* pk = &G[std::size_t(k) * width];
+      if (CGAL::is_zero(pk[k]))
+        return false;
+      for (int r = k + 1; r < u; ++r) {
+        Integer* pr = &G[std::size_t(r) * width];
+        for (std::size_t s = std::size_t(r); s < width; ++s)
+          pr[s] = divide(pr[s] * pk[k] - pk[r] * pk[s], previous);
+      }
+      previous = pk[k];
+    }
+    // back substitution for y = det x, an integer vector by Cramer's rule (det the last
+    // pivot, the determinant of G), so every division is exact
+    const Integer& det = previous;
+    std::vector<Integer> y(static_cast<std::size_t>(u));
+    std::array<Integer, max_supported_degree + 1> Lp; // powers of the offsets' denominator
+    Lp[0] = Integer(1);
+    for (int e = 1; e <= d; ++e)
+      Lp[std::size_t(e)] = Lp[std::size_t(e - 1)] * common[0];
+    for (int j = 0; j < D; ++j) {
+      for (int r = u; r-- > 0;) {
+        const Integer* pr = &G[std::size_t(r) * width];
+        Integer s = det * pr[u + j];
+        for (int l = r + 1; l < u; ++l)
+          s -= pr[l] * y[std::size_t(l)];
+        y[std::size_t(r)] = divide(s, pr[r]);
+      }
+      // x = y / det solves the integer system; the coefficient of a degree-t monomial of
+      // (xi, eta) is L^t x / Z's common denominator
+      const Integer denominator = det * common[3 + std::size_t(j)];
+      for (int t = 1, col = 0; t <= d; ++t)
+        for (int k = 0; k <= t; ++k, ++col)
+          m_numerators[(coefficients_per_vertex * std::size_t(v) + position(t - k, k)) * D +
+                       std::size_t(j)] = y[std::size_t(col)] * Lp[std::size_t(t)];
+      m_denominators[std::size_t(v) * D + std::size_t(j)] = denominator;
+    }
+    return true;
+  }
+
+  // The same normal equations by rational Gauss-Jordan elimination.
+  bool solve_rational(Index v, const std::vector<Value>& values, const std::vector<Index>& points,
+                      std::size_t n, int d, const FT& inverse_scale) {
     const int u = unknowns(d);
     const Point_2& c = m_domain->point(v);
     std::vector<std::vector<FT>> M(std::size_t(u), std::vector<FT>(std::size_t(u + D), FT(0)));
@@ -947,7 +1185,7 @@ private:
     for (std::size_t i = 0; i < n; ++i) {
       const Point_2& p = m_domain->point(points[i]);
       const FT xi = (p.x() - c.x()) * inverse_scale, eta = (p.y() - c.y()) * inverse_scale;
-      const FT w = FT(1) / (xi * xi + eta * eta);
+      const FT w = exact_weight(xi, eta);
       int col = 0;
       for (int t = 1; t <= d; ++t)
         for (int k = 0; k <= t; ++k, ++col) {
@@ -1000,11 +1238,15 @@ private:
   const Domain* m_domain;
   int m_max_degree;
   Degree_selection m_selection;
+  bool m_fraction_free;
   double m_tie_ratio = 1.1;
   std::vector<int> m_degree;
   std::vector<double> m_resolution;
   std::vector<FT> m_scale; // 1 / S_v
   std::vector<Value> m_coefficients;
+  // exact fraction types: the coefficients' numerators (D per coefficient) over one
+  // denominator per vertex and coordinate (0: not fitted fraction-free)
+  std::vector<Integer> m_numerators, m_denominators;
 };
 
 } // namespace Triangular_spline
