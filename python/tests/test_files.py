@@ -57,7 +57,7 @@ def test_values_equal_the_cli(tmp_path, data_dir, exact):
     command = [CLI, "c1", "--input", xyz, "--query", str(tmp_path / "q.xy"),
                "--values", str(tmp_path / "v.txt"), "--output", str(tmp_path / "c.spline")]
     # exact: the tangent fit (the adaptive one's exact local polynomials from the 53-bit
-    # rationals of doubles run at about 250 triangles per second; the CLI reads the short
+    # rationals of doubles run at about 300 triangles per second; the CLI reads the short
     # decimals exactly)
     fit = "tangent" if exact else "adaptive"
     subprocess.run(command + (["--exact"] if exact else []) + ["--fit", fit], check=True,

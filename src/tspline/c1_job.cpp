@@ -213,11 +213,11 @@ Json run(const C1_job& job, std::ostream& out) {
   memory["read_and_triangulate"] = peak_memory_mb();
   cpu["read_and_triangulate"] = cpu_clock.lap();
   // Exact arithmetic (issue 12): about 5000 triangles per second with the fits that read
-  // values and gradients; with the local polynomials' exact coefficients, about 200 on full
-  // double mantissas (coefficients of thousands of digits), 3000 on 6-decimal data. Say what
+  // values and gradients; with the local polynomials' exact coefficients, about 300 on full
+  // double mantissas (coefficients of thousands of digits), 3800 on 6-decimal data. Say what
   // to expect, at worst, before a long silence.
   const double exact_rate =
-      job.fit == "adaptive" || job.fit == "local" || job.fit == "lsq" ? 200.0 : 5000.0;
+      job.fit == "adaptive" || job.fit == "local" || job.fit == "lsq" ? 250.0 : 5000.0;
   // A few seconds of work from here on: 4 * exact_rate triangles exact, 10^6 in double.
   const bool large =
       double(input.domain.number_of_faces()) > (job.exact ? 4 * exact_rate : 300000.0);

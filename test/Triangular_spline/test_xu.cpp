@@ -275,6 +275,31 @@ TEST(Spline, ExactCertificationOnEveryDomainWithBothFixes) {
   }
 }
 
+TEST(Spline, ExactPropagationByDepthGivesThePlanOrdersValues) {
+  // Exact propagation runs the rules of one depth on all cores (from 2000 rules and two
+  // cores); every dependent value must equal the plan order's, rule by rule, for heights
+  // and for vectors.
+  Random_rationals random(17);
+  const auto check = [&](auto spline) {
+    randomize(spline, random);
+    const auto& values = spline.values();
+    auto expected = values;
+    for (const auto& r : spline.rules()) {
+      typename std::decay_t<decltype(values)>::value_type v =
+          r.weights[0] * expected[r.sources[0]] + r.weights[1] * expected[r.sources[1]];
+      if (r.size() == 3)
+        v = v + r.weights[2] * expected[r.sources[2]];
+      expected[r.target] = v;
+    }
+    ASSERT_GT(spline.rules().size(), 2000u); // two threads where two cores are
+    for (std::size_t s = 0; s < values.size(); ++s)
+      ASSERT_EQ(values[s], expected[s]) << s;
+  };
+  const auto domain = random_delaunay<Exact_kernel>(300, 41);
+  check(C1_quintic_spline<Exact_kernel>(domain));
+  check(C1_quintic_spline<Exact_kernel, Exact_kernel::Vector_3>(domain));
+}
+
 TEST(Spline, DoubleBuildHasRoundOffResidualsOnly) {
   using K = Epick;
   Random_rationals random(12);

@@ -113,9 +113,10 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     local.emplace(domain, values, local_degree, selection);
   // Per-slot work runs on all cores: in double from 50000 free values, exactly (a polar value
   // of a local polynomial costs about a tenth of a millisecond there) from 500.
+  constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
   const std::size_t threads =
-      internal::thread_count(spline.number_of_free_parameters(),
-                             CGAL::Algebraic_structure_traits<FT>::Is_exact::value ? 500 : 50000);
+      internal::thread_count(spline.number_of_free_parameters(), exact ? 500 : 50000);
+  const std::size_t block = exact ? 16 : internal::parallel_block;
   Fit_statistics statistics;
   if (local)
     for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
@@ -246,14 +247,17 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       return true;
     };
     const std::vector<Slot>& free_slots = spline.free_slots();
-    internal::parallel_for_index(free_slots.size(), threads, [&](std::size_t i) {
-      const Slot s = free_slots[i];
-      Value star;
-      if (given_star(s, star))
-        spline.set_free_value(s, star);
-      else if (outside_solve(s))
-        spline.set_free_value(s, target(s));
-    });
+    internal::parallel_for_index(
+        free_slots.size(), threads,
+        [&](std::size_t i) {
+          const Slot s = free_slots[i];
+          Value star;
+          if (given_star(s, star))
+            spline.set_free_value(s, star);
+          else if (outside_solve(s))
+            spline.set_free_value(s, target(s));
+        },
+        block);
     std::vector<double> distrust_tension;
     if (tension_weight > 0)
       for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
@@ -307,9 +311,9 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     solved = internal::least_squares_free_values(spline, values, target, given_star, options);
   } else {
     const std::vector<Slot>& free_slots = spline.free_slots();
-    internal::parallel_for_index(free_slots.size(), threads, [&](std::size_t i) {
-      spline.set_free_value(free_slots[i], target(free_slots[i]));
-    });
+    internal::parallel_for_index(
+        free_slots.size(), threads,
+        [&](std::size_t i) { spline.set_free_value(free_slots[i], target(free_slots[i])); }, block);
   }
   spline.propagate();
   static const char* const methods[] = {"", "direct", "windows"};

@@ -28,18 +28,21 @@ inline std::size_t thread_count(std::size_t n, std::size_t grain) {
 // a caller may append the results of a block's indices to that block's own buffer.
 constexpr std::size_t parallel_block = 1024;
 
-// Calls f(i) for every i in [0, n), in interleaved blocks of `parallel_block` over `threads`
-// threads (1: the calling thread only). An exception thrown by f is rethrown after every thread has
-// stopped: the one of the smallest index, as a serial loop would have thrown it.
+// Calls f(i) for every i in [0, n), in interleaved blocks of `block` (default
+// `parallel_block`; smaller for items of exact arithmetic, which cost a thousand times more)
+// over `threads` threads (1: the calling thread only). An exception thrown by f is rethrown
+// after every thread has stopped: the one of the smallest index, as a serial loop would have
+// thrown it.
 template <class F>
-void parallel_for_index(std::size_t n, std::size_t threads, const F& f) {
+void parallel_for_index(std::size_t n, std::size_t threads, const F& f,
+                        std::size_t block = parallel_block) {
   threads = (std::max<std::size_t>)(threads, 1);
+  block = (std::max<std::size_t>)(block, 1);
   if (threads == 1) {
     for (std::size_t i = 0; i < n; ++i)
       f(i);
     return;
   }
-  constexpr std::size_t block = parallel_block;
   std::vector<std::exception_ptr> error(threads);
   std::vector<std::size_t> error_at(threads, n);
   auto run = [&](std::size_t t) {
