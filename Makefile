@@ -5,8 +5,8 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 
 .DEFAULT_GOAL := build
-.PHONY: deps configure build demo test bench format doc pictures clean fuzz-deps fuzz-build fuzz \
-        fuzz-ci sanitize-configure sanitize
+.PHONY: deps configure build demo test bench tile-simulation format doc pictures clean fuzz-deps \
+        fuzz-build fuzz fuzz-ci sanitize-configure sanitize
 
 deps:
 	@scripts/install_dependencies.sh
@@ -36,6 +36,13 @@ bench: build
 	  fi; \
 	done; \
 	if [ $$found -eq 0 ]; then echo "no benchmark executables in $(BUILD_DIR)/benchmark"; fi
+
+# The tile-parallel simulation of doc/design/tile_parallel.md (not built by default):
+# TILE_ARGS='--n 10000000' for the design's 10^7 points.
+TILE_ARGS ?=
+tile-simulation: configure
+	cmake --build $(BUILD_DIR) --target tile_simulation -j $(JOBS)
+	$(BUILD_DIR)/tile_simulation $(TILE_ARGS)
 
 format: deps
 	find include src test examples benchmark \( -name '*.h' -o -name '*.cpp' \) -print0 \

@@ -6,6 +6,7 @@
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
+#include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Xu/degenerate_frames.h>
 #include <CGAL/Triangular_spline/exceptions.h>
@@ -602,10 +603,37 @@ private:
   }
 
   void apply(const Rule& r) {
-    Value v = r.weights[0] * m_values[r.sources[0]] + r.weights[1] * m_values[r.sources[1]];
-    if (r.size() == 3)
-      v = v + r.weights[2] * m_values[r.sources[2]];
-    m_values[r.target] = std::move(v);
+    if constexpr (!CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
+      // Rounded sums depend on their order, and the order of a rule's sources follows the
+      // vertex numbering: the terms are added in increasing order of their values, so a
+      // tile numbered otherwise computes the very bits of the whole set (two terms commute
+      // in any case). Exact sums need no order.
+      using VT = Value_traits<Value>;
+      std::array<FT, std::size_t(VT::dimension)> sum;
+      for (int k = 0; k < VT::dimension; ++k) {
+        std::array<FT, 3> t;
+        for (int i = 0; i < r.size(); ++i)
+          t[std::size_t(i)] =
+              r.weights[std::size_t(i)] * VT::coordinate(m_values[r.sources[std::size_t(i)]], k);
+        if (r.size() == 2) {
+          sum[std::size_t(k)] = t[0] + t[1];
+          continue;
+        }
+        if (t[1] < t[0])
+          std::swap(t[0], t[1]);
+        if (t[2] < t[1])
+          std::swap(t[1], t[2]);
+        if (t[1] < t[0])
+          std::swap(t[0], t[1]);
+        sum[std::size_t(k)] = (t[0] + t[1]) + t[2];
+      }
+      m_values[r.target] = VT::from_coordinates(sum);
+    } else {
+      Value v = r.weights[0] * m_values[r.sources[0]] + r.weights[1] * m_values[r.sources[1]];
+      if (r.size() == 3)
+        v = v + r.weights[2] * m_values[r.sources[2]];
+      m_values[r.target] = std::move(v);
+    }
   }
 
   std::array<FT, 3> barycentric(const Point_2& x, const Point_2& a, const Point_2& b,
@@ -671,6 +699,18 @@ private:
     };
     if (d == 2) // an ear: the whole region is free
       return {{0, 1, 2}};
+    // The searches below take the first of equally good frames (and sample the pairs of
+    // vertices of degree above 16), so around an interior vertex they start at the
+    // neighbour with the lexicographically smallest point, not where the numbering starts
+    // the rotation. A boundary vertex's rotation starts on the boundary.
+    std::size_t first = 0;
+    if (!m_domain.is_boundary_vertex(v))
+      for (std::size_t k = 1; k < d; ++k) {
+        const Point_2 &p = m_domain.point(nb[k]), &q = m_domain.point(nb[first]);
+        if (p.x() < q.x() || (p.x() == q.x() && p.y() < q.y()))
+          first = k;
+      }
+    auto at = [&](std::size_t t) { return 1 + (first + t - 1) % d; }; // t = 1..d
     // Good enough for a symmetric frame: no angle below about 6 degrees.
     const double acceptable = 0.1;
     std::array<std::size_t, 3> best{{0, 0, 0}};
@@ -686,20 +726,23 @@ private:
     if (m_frame == Corner_frame::SYMMETRIC_STARS) {
       const bool boundary = m_domain.is_boundary_vertex(v);
       // Stars spread evenly: interior i, i+d/3, i+2d/3; boundary both ends and a middle one.
+      // The best-shaped of them (the first acceptable one depended on where the rotation
+      // starts).
       const std::size_t shifts = boundary ? d - 2 : d;
       for (std::size_t shift = 0; shift < shifts; ++shift) {
         const std::array<std::size_t, 3> f =
             boundary ? std::array<std::size_t, 3>{{1, 1 + ((d - 1) / 2 + shift) % (d - 2) + 1, d}}
-                     : std::array<std::size_t, 3>{{1 + shift, 1 + (shift + (d + 1) / 3) % d,
-                                                   1 + (shift + (2 * d + 1) / 3) % d}};
-        if (consider(f) >= acceptable)
-          return f;
+                     : std::array<std::size_t, 3>{{at(1 + shift), at(1 + (shift + (d + 1) / 3) % d),
+                                                   at(1 + (shift + (2 * d + 1) / 3) % d)}};
+        consider(f);
       }
+      if (best_quality >= acceptable)
+        return best;
       // No good symmetric frame: the best triple of stars, if any is acceptable.
       for (std::size_t i = 1; i <= d && d <= 16; ++i)
         for (std::size_t j = i + 1; j <= d; ++j)
           for (std::size_t k = j + 1; k <= d; ++k)
-            consider({{i, j, k}});
+            consider({{at(i), at(j), at(k)}});
       if (best_quality >= acceptable)
         return best;
     }
@@ -731,13 +774,13 @@ private:
     };
     const std::size_t stride = d <= 16 ? 1 : d / 16;
     for (std::size_t i = 1; i < d; ++i) // consecutive neighbours span a face: always valid
-      consider_pair(i, i + 1);
+      consider_pair(at(i), at(i + 1));
     for (std::size_t i = 1; i <= d; i += stride)
       for (std::size_t j = i + 2; j <= d; ++j)
-        consider_pair(i, j);
+        consider_pair(at(i), at(j));
     if (!std::isfinite(best_cost)) // every cost NaN in double: the best-shaped pair
       for (std::size_t i = 1; i < d; ++i)
-        consider({{0, i, i + 1}});
+        consider({{0, at(i), at(i + 1)}});
     CGAL_assertion(best[1] != best[2]);
     return best;
   }
@@ -1284,8 +1327,17 @@ private:
 
   // target = the combination, as a chain of rules of at most three sources: auxiliary slots
   // (after the control points) hold the partial sums.
-  void add_wide_rule(Slot target, const std::vector<std::pair<Slot, FT>>& combination,
+  void add_wide_rule(Slot target, std::vector<std::pair<Slot, FT>> combination,
                      std::vector<Index>& thin_edge_of_rule) {
+    // Rounded partial sums depend on how the terms are grouped: in double they are taken
+    // in an order of their own (weight, then the points of the slot's polar label), not in
+    // the order of the numbering, like the terms of apply().
+    if constexpr (!CGAL::Algebraic_structure_traits<FT>::Is_exact::value)
+      std::sort(combination.begin(), combination.end(), [&](const auto& a, const auto& b) {
+        if (a.second != b.second)
+          return a.second < b.second;
+        return label_less(a.first, b.first);
+      });
     std::size_t next = 0;
     Slot sum = null_slot; // the partial sum so far
     while (next < combination.size()) {
@@ -1314,6 +1366,41 @@ private:
       thin_edge_of_rule.push_back(Domain::null_index);
       sum = to;
     }
+  }
+
+  // A strict order of control slots that does not depend on the numbering: their polar
+  // labels, as (point, multiplicity) pairs in lexicographic order of the points, compared
+  // lexicographically.
+  bool label_less(Slot a, Slot b) const {
+    struct Key {
+      std::array<std::pair<const Point_2*, int>, 3> entries;
+      std::size_t size = 0;
+    };
+    auto point_less = [](const Point_2& p, const Point_2& q) {
+      return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
+    };
+    auto key = [&](Slot s) {
+      Key k;
+      for (const auto& [v, m] : polar_label(s))
+        k.entries[k.size++] = {&m_domain.point(v), m};
+      auto order = [&](std::size_t i, std::size_t j) { // a sorting network of three
+        if (j < k.size && point_less(*k.entries[j].first, *k.entries[i].first))
+          std::swap(k.entries[i], k.entries[j]);
+      };
+      order(0, 1);
+      order(1, 2);
+      order(0, 1);
+      return k;
+    };
+    const Key ka = key(a), kb = key(b);
+    for (std::size_t i = 0; i < (std::min)(ka.size, kb.size); ++i) {
+      const auto &p = ka.entries[i], &q = kb.entries[i];
+      if (point_less(*p.first, *q.first) || point_less(*q.first, *p.first))
+        return point_less(*p.first, *q.first);
+      if (p.second != q.second)
+        return p.second < q.second;
+    }
+    return ka.size < kb.size;
   }
 
   // The largest regular weight of the two ends of interior edge e.

@@ -38,7 +38,18 @@ std::vector<std::array<Value, 2>> estimate_gradients(const Planar_domain<GeomTra
     FT a(0), b(0), c(0);
     Value rx = Value_traits<Value>::zero(), ry = Value_traits<Value>::zero();
     const auto [nb, ne] = domain.neighbours(v);
-    for (auto w = nb; w != ne; ++w) {
+    // Summed from the neighbour with the lexicographically smallest point on, around v: the
+    // rounded sums then do not depend on the vertex numbering, which sets where the
+    // rotation starts.
+    const auto n = ne - nb;
+    auto first = nb;
+    for (auto w = nb + 1; w != ne; ++w) {
+      const auto &p = domain.point(*w), &q = domain.point(*first);
+      if (p.x() < q.x() || (p.x() == q.x() && p.y() < q.y()))
+        first = w;
+    }
+    for (auto i = decltype(n)(0); i < n; ++i) {
+      const auto w = nb + (first - nb + i) % n;
       const FT dx = domain.point(*w).x() - domain.point(v).x();
       const FT dy = domain.point(*w).y() - domain.point(v).y();
       a = a + dx * dx;

@@ -129,8 +129,20 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       return v;
     const auto label = spline.polar_label(s);
     if (fit == Fit::APPROXIMATE || fit == Fit::INTERPOLATE) {
-      for (const auto& [vertex, multiplicity] : label)
-        v = v + (FT(multiplicity) / FT(5)) * values[vertex];
+      // summed in the lexicographic order of the points, not in the numbering's
+      std::array<std::pair<std::uint32_t, int>, 3> terms;
+      std::size_t count = 0;
+      for (const auto& entry : label)
+        terms[count++] = entry;
+      auto before = [&](std::size_t i, std::size_t j) {
+        const auto &p = domain.point(terms[i].first), &q = domain.point(terms[j].first);
+        return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
+      };
+      for (std::size_t i = 1; i < count; ++i)
+        for (std::size_t j = i; j > 0 && before(j, j - 1); --j)
+          std::swap(terms[j], terms[j - 1]);
+      for (std::size_t i = 0; i < count; ++i)
+        v = v + (FT(terms[i].second) / FT(5)) * values[terms[i].first];
       return v;
     }
     int largest = 0;

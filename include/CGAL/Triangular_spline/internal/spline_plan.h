@@ -80,20 +80,14 @@ auto barycentric_of_coordinates(const Coordinates& x, const Coordinates& a, cons
   return std::array<T, 3>{{lambda, mu, nu}};
 }
 
-// Barycentric coordinates of x with respect to (a, b, c), which the exact predicates have
-// found non-collinear. With an inexact number type a nearly collinear frame can round its
-// determinant to zero (or to the wrong size): below the error bound the weights are
-// recomputed with exact rationals and rounded once, so they are never infinite and always
-// accurate to the last bit.
+// barycentric_weights() for the corners in the order given.
 template <class Point_2>
-auto barycentric_weights(const Point_2& x, const Point_2& a, const Point_2& b, const Point_2& c) {
+auto barycentric_weights_in_order(const Point_2& x, const Point_2& a, const Point_2& b,
+                                  const Point_2& c) {
   using FT = std::decay_t<decltype(x.x())>;
-  auto compute = [](const auto& x, const auto& a, const auto& b, const auto& c) {
-    return barycentric_of_coordinates(x, a, b, c);
-  };
   auto coords = [](const Point_2& p) { return std::array<FT, 2>{{p.x(), p.y()}}; };
   if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
-    return compute(coords(x), coords(a), coords(b), coords(c));
+    return barycentric_of_coordinates(coords(x), coords(a), coords(b), coords(c));
   } else {
     const double bx = CGAL::to_double(b.x() - a.x()), by = CGAL::to_double(b.y() - a.y());
     const double cx = CGAL::to_double(c.x() - a.x()), cy = CGAL::to_double(c.y() - a.y());
@@ -101,14 +95,49 @@ auto barycentric_weights(const Point_2& x, const Point_2& a, const Point_2& b, c
     const double scale =
         (std::max)(std::abs(bx), std::abs(by)) * (std::max)(std::abs(cx), std::abs(cy));
     if (std::abs(d) > 1e-10 * scale)
-      return compute(coords(x), coords(a), coords(b), coords(c));
+      return barycentric_of_coordinates(coords(x), coords(a), coords(b), coords(c));
     using Q = CGAL::Exact_rational;
     auto exact = [](const Point_2& p) {
       return std::array<Q, 2>{{Q(CGAL::to_double(p.x())), Q(CGAL::to_double(p.y()))}};
     };
-    const std::array<Q, 3> w = compute(exact(x), exact(a), exact(b), exact(c));
+    const std::array<Q, 3> w = barycentric_of_coordinates(exact(x), exact(a), exact(b), exact(c));
     return std::array<FT, 3>{
         {FT(CGAL::to_double(w[0])), FT(CGAL::to_double(w[1])), FT(CGAL::to_double(w[2]))}};
+  }
+}
+
+// Barycentric coordinates of x with respect to (a, b, c), which the exact predicates have
+// found non-collinear. With an inexact number type a nearly collinear frame can round its
+// determinant to zero (or to the wrong size): below the error bound the weights are
+// recomputed with exact rationals and rounded once, so they are never infinite and always
+// accurate to the last bit. Inexact weights are computed with the corners in the
+// lexicographic order of their points: their bits then do not depend on the order the
+// caller names the corners in, which follows the vertex numbering, and a tile of a larger
+// point set, numbered otherwise, gets the very rules of the whole set
+// (doc/design/tile_parallel.md).
+template <class Point_2>
+auto barycentric_weights(const Point_2& x, const Point_2& a, const Point_2& b, const Point_2& c) {
+  using FT = std::decay_t<decltype(x.x())>;
+  if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
+    return barycentric_weights_in_order(x, a, b, c);
+  } else {
+    const std::array<const Point_2*, 3> p = {&a, &b, &c};
+    std::array<std::size_t, 3> corner = {0, 1, 2};
+    auto before = [&](std::size_t i, std::size_t j) {
+      return p[i]->x() < p[j]->x() || (p[i]->x() == p[j]->x() && p[i]->y() < p[j]->y());
+    };
+    if (before(corner[1], corner[0]))
+      std::swap(corner[0], corner[1]);
+    if (before(corner[2], corner[1]))
+      std::swap(corner[1], corner[2]);
+    if (before(corner[1], corner[0]))
+      std::swap(corner[0], corner[1]);
+    const std::array<FT, 3> w =
+        barycentric_weights_in_order(x, *p[corner[0]], *p[corner[1]], *p[corner[2]]);
+    std::array<FT, 3> result;
+    for (std::size_t i = 0; i < 3; ++i)
+      result[corner[i]] = w[i];
+    return result;
   }
 }
 
