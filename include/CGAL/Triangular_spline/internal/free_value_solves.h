@@ -41,20 +41,30 @@ namespace internal {
 template <class Value>
 struct Affine_slots {
   static constexpr int D = Value_traits<Value>::dimension;
-  std::vector<int> column;
+  static constexpr std::uint32_t no_row = std::numeric_limits<std::uint32_t>::max();
   std::size_t unknowns = 0;
-  std::vector<std::size_t> row_begin; // slot s's entries: row_begin[s] .. + row_size[s]
+  // Rows only for the slots that depend on an unknown (all of them in the global fits, those
+  // near the untrusted vertices in the adaptive fit): slot s's entries are
+  // row_begin[row[s]] .. + row_size[row[s]]. Dense per-slot row arrays cost 16 bytes per
+  // slot, 400 MB at 10^6 points, for an adaptive fit whose solve touches 2% of them.
+  std::vector<std::uint32_t> row;
+  std::vector<std::size_t> row_begin;
   std::vector<std::uint32_t> row_size;
   std::vector<int> unknown;
   std::vector<double> weight;
   std::vector<std::array<double, D>> constant;
   std::vector<std::pair<std::uint32_t, Value>> fixed; // the free slots that are not unknowns
 
-  bool has_row(std::size_t s) const { return row_size[s] != 0; }
+  bool has_row(std::size_t s) const { return row[s] != no_row; }
+  std::size_t row_length(std::size_t s) const { return has_row(s) ? row_size[row[s]] : 0; }
+  // the unknown of free slot s, or -1 if s is fixed (a free unknown's row is itself)
+  int column(std::size_t s) const { return has_row(s) ? unknown[row_begin[row[s]]] : -1; }
   // calls f(unknown, weight) for the entries of slot s's row, in increasing unknown order
   template <class F>
   void for_each_entry(std::size_t s, const F& f) const {
-    for (std::size_t i = row_begin[s], end = i + row_size[s]; i < end; ++i)
+    if (!has_row(s))
+      return;
+    for (std::size_t i = row_begin[row[s]], end = i + row_size[row[s]]; i < end; ++i)
       f(unknown[i], weight[i]);
   }
 };
@@ -69,11 +79,7 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
   const std::size_t n = spline.values().size(); // control points and auxiliary slots
   const std::size_t V = spline.domain().number_of_vertices();
   Affine_slots<Value> a;
-  a.column.assign(n, -1);
-  a.row_begin.assign(n, 0);
-  a.row_size.assign(n, 0);
-  a.unknown.reserve(3 * n);
-  a.weight.reserve(3 * n);
+  a.row.assign(n, a.no_row);
   a.constant.resize(n);
   for (auto& c : a.constant)
     c.fill(0);
@@ -82,16 +88,25 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
     if (corners_fixed && s < V)
       given = values[s];
     else if (!fixed(s, given)) {
-      a.column[s] = static_cast<int>(a.unknowns++);
-      a.row_begin[s] = a.unknown.size();
-      a.row_size[s] = 1;
-      a.unknown.push_back(a.column[s]);
+      a.row[s] = static_cast<std::uint32_t>(a.row_begin.size());
+      a.row_begin.push_back(a.unknown.size());
+      a.row_size.push_back(1);
+      a.unknown.push_back(static_cast<int>(a.unknowns++));
       a.weight.push_back(1.0);
       continue;
     }
     for (int c = 0; c < D; ++c)
       a.constant[s][std::size_t(c)] = CGAL::to_double(Traits::coordinate(given, c));
     a.fixed.emplace_back(s, given);
+  }
+  // The global fits make every slot's row reach unknowns, about three entries each: reserved
+  // at once (growing them copied 1.5 times their final size). A local solve (the adaptive
+  // fit's) grows them as needed.
+  if (4 * a.unknowns > spline.free_slots().size()) {
+    a.row_begin.reserve(n);
+    a.row_size.reserve(n);
+    a.unknown.reserve(3 * n);
+    a.weight.reserve(3 * n);
   }
   // A rule's row: the merge of its (at most three) sources' sorted rows, equal unknowns
   // summed in source order.
@@ -106,12 +121,17 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
     for (int i = 0; i < sources; ++i) {
       const Slot src = rule.sources[std::size_t(i)];
       w[std::size_t(i)] = CGAL::to_double(rule.weights[std::size_t(i)]);
-      at[std::size_t(i)] = a.row_begin[src];
-      end[std::size_t(i)] = at[std::size_t(i)] + a.row_size[src];
-      total += a.row_size[src];
+      if (a.has_row(src)) {
+        at[std::size_t(i)] = a.row_begin[a.row[src]];
+        end[std::size_t(i)] = at[std::size_t(i)] + a.row_size[a.row[src]];
+        total += a.row_size[a.row[src]];
+      }
       for (int c = 0; c < D; ++c)
         k[std::size_t(c)] += w[std::size_t(i)] * a.constant[src][std::size_t(c)];
     }
+    a.constant[rule.target] = k;
+    if (total == 0)
+      continue; // no unknown reaches the target: a constant
     const std::size_t begin = a.unknown.size();
     a.unknown.resize(begin + total); // may move the arrays: indices, not pointers, above
     a.weight.resize(begin + total);
@@ -132,9 +152,11 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
     }
     a.unknown.resize(out);
     a.weight.resize(out);
-    a.row_begin[rule.target] = begin;
-    a.row_size[rule.target] = std::uint32_t(out - begin);
-    a.constant[rule.target] = k;
+    if (out == begin)
+      continue; // the unknowns cancelled
+    a.row[rule.target] = static_cast<std::uint32_t>(a.row_begin.size());
+    a.row_begin.push_back(begin);
+    a.row_size.push_back(std::uint32_t(out - begin));
   }
   return a;
 }
@@ -241,14 +263,18 @@ Schwarz_statistics minimise_slot_quadratic(
   const auto indices = bernstein_indices(5);
   constexpr std::size_t n = 21;
   const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-  // slots' owning faces; misfit targets by face
-  std::vector<std::uint32_t> owning_face(spline.number_of_slots(), none);
-  for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f)
-    for (const auto& index : indices) {
-      const Slot s = spline.slot(f, index);
-      if (owning_face[s] == none)
-        owning_face[s] = f;
-    }
+  // slots' owning faces (4 bytes per slot: only when there are misfits); misfit targets by
+  // face
+  std::vector<std::uint32_t> owning_face;
+  if (!misfits.empty()) {
+    owning_face.assign(spline.number_of_slots(), none);
+    for (std::uint32_t f = 0; f < domain.number_of_faces(); ++f)
+      for (const auto& index : indices) {
+        const Slot s = spline.slot(f, index);
+        if (owning_face[s] == none)
+          owning_face[s] = f;
+      }
+  }
   std::vector<std::size_t> misfit_start(domain.number_of_faces() + 1, 0);
   std::vector<std::pair<Slot, std::array<double, D>>> face_misfits(misfits.size());
   for (const auto& m : misfits)
@@ -274,9 +300,9 @@ Schwarz_statistics minimise_slot_quadratic(
   std::vector<std::uint32_t> owner(a.unknowns);
   Eigen::MatrixXd x(Eigen::Index(a.unknowns), D);
   for (Slot s : spline.free_slots()) {
-    if (a.column[s] < 0)
+    if (a.column(s) < 0)
       continue;
-    const auto j = std::size_t(a.column[s]);
+    const auto j = std::size_t(a.column(s));
     slot_of[j] = s;
     int largest = -1;
     for (const auto& [v, m] : spline.polar_label(s))
