@@ -1,6 +1,11 @@
 // Tests of Xu's C^1 quintic spline: plan, propagation, degenerate frames (re-routing and
 // perturbation), exact certification, dimension counts, local control, fitting.
 
+// Every plan built by these tests checks that each rule it keeps implicit (in double: its
+// target only) is rebuilt with the very sources and weights the plan computed. Defined
+// before any header: this file is the test's only translation unit.
+#define CGAL_TRIANGULAR_SPLINE_CHECK_IMPLICIT_RULES
+
 #include "test_support.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -272,6 +277,100 @@ TEST(Spline, ExactCertificationOnEveryDomainWithBothFixes) {
     EXPECT_LE(spline.max_propagation_weight(), 64.0) << name;
     randomize(spline, random);
     EXPECT_TRUE(certify(spline).certified) << name << " (perturbed)";
+  }
+}
+
+// In double the plan keeps most rules as a reference (rebuilt from the domain when read):
+// the stored ones are those of re-routed frames and near-singular vertices, and propagation
+// on all cores gives the plan order's bits, terms added in increasing order (apply()).
+TEST(Spline, DoublePlanStoresFewRulesAndPropagatesInPlanOrder) {
+  using Spline = C1_quintic_spline<Epick>;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  // random points, and a grid jittered by rounding (degenerate and thin frames, near-singular
+  // vertices)
+  for (const bool scattered : {true, false}) {
+    Spline spline(scattered ? random_delaunay<Epick>(3000, 23)
+                            : delaunay_of<Epick>(jittered_grid(64, 1e-12, random)));
+    const std::size_t R = spline.number_of_rules();
+    ASSERT_GT(R, 20000u); // parallel runs from 20000 rules
+    EXPECT_EQ(R, spline.number_of_slots() + spline.number_of_auxiliary_slots() -
+                     spline.number_of_free_parameters());
+    // each re-routed end has a stored rule of its edge-middle point (and links); random
+    // points re-route about 8 in 100 edge ends (weights above the bound)
+    EXPECT_GE(spline.number_of_stored_rules(), spline.rerouted_frames().size());
+    if (scattered) {
+      EXPECT_LT(spline.number_of_stored_rules(), R / 8);
+    } else {
+      EXPECT_GT(spline.near_singular_vertices().size(), 10u);
+    }
+    std::cout << spline.number_of_stored_rules() << " of " << R << " rules stored, "
+              << spline.rerouted_frames().size() << " re-routed ends, "
+              << spline.near_singular_vertices().size() << " near-singular vertices\n";
+    const std::vector<Spline::Rule> rules = spline.rules();
+    ASSERT_EQ(rules.size(), R);
+    std::size_t visited = 0;
+    spline.for_each_rule([&](const Spline::Rule& r) {
+      const Spline::Rule& s = rules[visited++];
+      EXPECT_TRUE(r.target == s.target && r.sources == s.sources && r.weights == s.weights);
+    });
+    EXPECT_EQ(visited, R);
+    // the weights by kind, kept by the plan, are those of the rules
+    std::array<double, 6> largest{};
+    std::array<std::size_t, 6> above{};
+    for (const Spline::Rule& r : rules) {
+      double w = 0;
+      for (int i = 0; i < r.size(); ++i)
+        w = (std::max)(w, std::abs(r.weights[std::size_t(i)]));
+      const std::size_t k = std::size_t(spline.kind(r.target));
+      largest[k] = (std::max)(largest[k], w);
+      above[k] += w > Spline::propagation_weight_bound ? 1 : 0;
+    }
+    for (std::size_t k = 0; k < 6; ++k) {
+      EXPECT_EQ(spline.max_propagation_weight(TS::Slot_kind(k)), largest[k]) << k;
+      EXPECT_EQ(spline.number_of_rules_above_weight_bound(TS::Slot_kind(k)), above[k]) << k;
+    }
+    EXPECT_EQ(spline.max_propagation_weight(), *std::max_element(largest.begin(), largest.end()));
+    // the amplification estimate (rules in runs on all cores) is the serial one's
+    {
+      std::vector<float> x(spline.values().size(), 0.0f);
+      std::mt19937 signs(1);
+      for (const Spline::Slot s : spline.free_slots()) {
+        const TS::Slot_kind k = spline.kind(s);
+        if (k != TS::Slot_kind::CORNER && k != TS::Slot_kind::STAR)
+          x[s] = (signs() & 1) ? 1.0f : -1.0f;
+      }
+      double amplification = 0;
+      for (const Spline::Rule& r : rules) {
+        double v = 0;
+        for (int i = 0; i < r.size(); ++i)
+          v += r.weights[std::size_t(i)] * x[r.sources[std::size_t(i)]];
+        x[r.target] = static_cast<float>(v);
+        amplification = (std::max)(amplification, std::abs(v));
+      }
+      for (const Spline::Slot s : spline.free_slots())
+        amplification = (std::max)(amplification, double(std::abs(x[s])));
+      EXPECT_EQ(spline.propagation_amplification(), amplification);
+    }
+    for (Spline::Slot s : spline.free_slots())
+      spline.set_free_value(s, uniform(random));
+    spline.propagate();
+    std::vector<double> expected = spline.values();
+    for (const Spline::Slot s : spline.free_slots())
+      expected[s] = spline.value(s);
+    for (const Spline::Rule& r : rules) {
+      std::array<double, 3> t{};
+      for (int i = 0; i < r.size(); ++i)
+        t[std::size_t(i)] = r.weights[std::size_t(i)] * expected[r.sources[std::size_t(i)]];
+      if (r.size() == 2) {
+        expected[r.target] = t[0] + t[1];
+      } else {
+        std::sort(t.begin(), t.end());
+        expected[r.target] = (t[0] + t[1]) + t[2];
+      }
+    }
+    for (std::size_t s = 0; s < expected.size(); ++s)
+      ASSERT_EQ(spline.values()[s], expected[s]) << s;
   }
 }
 
@@ -2872,12 +2971,13 @@ TEST(Dimension, PlanCheckFailsForAWrongWeightOrAMissingRule) {
   EXPECT_EQ(good.failed, 0u);
   EXPECT_EQ(good.conditions, 5 * spline.domain().number_of_interior_edges());
   std::size_t caught = 0, tried = 0;
-  for (std::size_t r = 0; r < spline.rules().size(); r += 7) {
-    Edited_plan<C1_quintic_spline<K>> plan{spline, spline.rules()};
+  const std::vector<C1_quintic_spline<K>::Rule> rules = spline.rules();
+  for (std::size_t r = 0; r < rules.size(); r += 7) {
+    Edited_plan<C1_quintic_spline<K>> plan{spline, rules};
     auto& w = plan.edited[r].weights[0];
     const K::FT num = w.get_num(), den = w.get_den();
     w = num / (den + 1);
-    if (w == spline.rules()[r].weights[0])
+    if (w == rules[r].weights[0])
       continue; // a zero weight stays zero
     ++tried;
     const auto check = TS::internal::check_plan_implies_c1(plan);
@@ -2886,7 +2986,7 @@ TEST(Dimension, PlanCheckFailsForAWrongWeightOrAMissingRule) {
   }
   EXPECT_GT(tried, 10u);
   EXPECT_EQ(caught, tried);
-  Edited_plan<C1_quintic_spline<K>> missing{spline, spline.rules()};
+  Edited_plan<C1_quintic_spline<K>> missing{spline, rules};
   missing.edited.pop_back();
   EXPECT_FALSE(TS::internal::check_plan_implies_c1(missing).valid);
 }

@@ -310,6 +310,9 @@ private:
         ++m_boundary_edges;
       i = j;
     }
+    // The edges were appended: their doubled capacity would outlive the domain's build.
+    m_edges.shrink_to_fit();
+    m_edge_faces.shrink_to_fit();
     count_components_and_loops();
   }
 

@@ -65,6 +65,7 @@ Planar_domain<GeomTraits> domain_from_triangulation_2(const Triangulation& trian
     vertex_map.push_back(v);
   }
   std::vector<std::array<Index, 3>> triangles;
+  triangles.reserve(triangulation.number_of_faces());
   for (auto f : triangulation.finite_face_handles())
     if (in_domain(f))
       triangles.push_back({index[f->vertex(0)], index[f->vertex(1)], index[f->vertex(2)]});

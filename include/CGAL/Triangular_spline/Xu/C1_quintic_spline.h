@@ -182,8 +182,10 @@ public:
       : m_domain(std::move(domain)), m_frame(frame) {
     const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges(),
                       F = m_domain.number_of_faces();
-    if (V + 4 * E + 6 * F >= null_slot)
-      throw Invalid_input("spline: domain too large for 32-bit slot indices");
+    // A rule is kept as one 32-bit reference whose top bit tells stored from implicit.
+    if (V + 4 * E + 6 * F >= explicit_rule_bit)
+      throw Invalid_input("spline: domain too large: more than 2^31 control points (about "
+                          "1.7e8 vertices)");
     m_control_slots = V + 4 * E + 6 * F;
     build_plan();
   }
@@ -303,9 +305,42 @@ public:
   /// returns the number of free slots.
   /// \returns the number of free slots
   std::size_t number_of_free_parameters() const { return m_free_slots.size(); }
-  /// returns the rules in evaluation order
+  /// returns the number of rules (dependent slots, and partial sums in auxiliary slots)
+  /// \returns the number of rules
+  std::size_t number_of_rules() const { return m_rule_refs.size(); }
+  /// returns rule `i` in evaluation order. In `double` the spline stores only the rules of
+  /// re-routed frames and of near-singular vertices; every other rule (corner regions,
+  /// edge-middle points of regular ends, flip points) is rebuilt from the domain when read,
+  /// with the very weights the plan computed: 4 bytes per rule instead of 40, 0.55 GB less
+  /// at 10^6 points. Exact number types keep every rule.
+  /// \pre `i < number_of_rules()`
+  /// \param i the position of the rule in evaluation order
+  /// \returns the rule
+  Rule rule(std::size_t i) const { return rule_of_ref(m_rule_refs[i], true); }
+  /// returns the number of rules stored with their weights (`rule()`); the others are
+  /// rebuilt from the domain when read
+  /// \returns the number of stored rules
+  std::size_t number_of_stored_rules() const { return m_explicit_rules.size(); }
+  /// calls `f(rule)` for every rule in evaluation order, without a copy of the plan.
+  /// \param f a function object taking a `const Rule&`
+  template <class F>
+  void for_each_rule(F&& f) const {
+    for (const std::uint32_t ref : m_rule_refs) {
+      if (ref & explicit_rule_bit)
+        f(m_explicit_rules[ref & ~explicit_rule_bit]);
+      else
+        f(implicit_rule(ref, true));
+    }
+  }
+  /// returns a copy of the rules in evaluation order (`rule()`); prefer `for_each_rule()`
+  /// on large domains, which copies nothing
   /// \returns the rules in evaluation order
-  const std::vector<Rule>& rules() const { return m_rules; }
+  std::vector<Rule> rules() const {
+    std::vector<Rule> all;
+    all.reserve(m_rule_refs.size());
+    for_each_rule([&](const Rule& r) { all.push_back(r); });
+    return all;
+  }
   /// returns the degenerate frames found in the domain (`find_degenerate_frames()`)
   /// \returns the degenerate frames found in the domain (`find_degenerate_frames()`)
   const std::vector<Degenerate_frame>& degenerate_frames() const { return m_degenerate.frames; }
@@ -318,6 +353,19 @@ public:
   /// amplify a change of a prescribed point (1 for a value copied unchanged)
   /// \returns the largest absolute rule coefficient
   double max_propagation_weight() const { return m_max_weight; }
+  /// returns the largest absolute coefficient of the rules computing slots of kind `k`
+  /// (where the largest weights are: `Slot_kind::AUXILIARY` for the partial sums of
+  /// near-singular vertices)
+  /// \param k a slot kind
+  /// \returns the largest absolute rule coefficient of that kind (0 if no rule)
+  double max_propagation_weight(Slot_kind k) const { return m_max_weight_by_kind[std::size_t(k)]; }
+  /// returns the number of rules computing slots of kind `k` whose largest absolute
+  /// coefficient exceeds `propagation_weight_bound`
+  /// \param k a slot kind
+  /// \returns the number of such rules
+  std::size_t number_of_rules_above_weight_bound(Slot_kind k) const {
+    return m_above_bound_by_kind[std::size_t(k)];
+  }
   /// returns an estimate of how much the propagation amplifies inconsistent prescribed
   /// points: the largest absolute control value when every corner region is zero and every
   /// other free point is an independent random sign (fixed seed, computed in double on a
@@ -337,13 +385,15 @@ public:
         x[s] = (random() & 1) ? 1.0f : -1.0f;
     }
     double largest = 0;
-    for (const Rule& r : m_rules) {
-      double v = 0;
-      for (int i = 0; i < r.size(); ++i)
-        v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
-      x[r.target] = static_cast<float>(v);
-      largest = (std::max)(largest, std::abs(v));
-    }
+    for_each_rule_in_runs(
+        [&](const Rule& r, double& block_largest) {
+          double v = 0;
+          for (int i = 0; i < r.size(); ++i)
+            v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
+          x[r.target] = static_cast<float>(v);
+          block_largest = (std::max)(block_largest, std::abs(v));
+        },
+        largest);
     for (Slot s : m_free_slots)
       largest = (std::max)(largest, double(std::abs(x[s])));
     return largest;
@@ -416,15 +466,19 @@ public:
   /// computes every dependent slot from the free ones, in plan order (with an exact number
   /// type, the rules of one depth on all cores: the same values).
   void propagate() {
+    const std::size_t R = m_rule_refs.size();
     if constexpr (Algebraic_structure_traits<FT>::Is_exact::value) {
-      const std::size_t threads = internal::thread_count(m_rules.size(), 2000);
+      const std::size_t threads = internal::thread_count(R, 2000);
       if (threads > 1) {
         propagate_by_depth(threads);
         return;
       }
+      for (const std::uint32_t ref : m_rule_refs)
+        apply_ref(ref);
+    } else {
+      double unused = 0;
+      for_each_rule_in_runs([&](const Rule& r, double&) { apply(r); }, unused);
     }
-    for (const Rule& r : m_rules)
-      apply(r);
   }
 
   /*!
@@ -469,9 +523,10 @@ public:
       const std::size_t r = heap.back();
       heap.pop_back();
       m_queued[r] = 0;
-      apply(m_rules[r]);
-      changed.push_back(m_rules[r].target);
-      enqueue_dependents(m_rules[r].target);
+      const Rule rule = rule_of_ref(m_rule_refs[r], true);
+      apply(rule);
+      changed.push_back(rule.target);
+      enqueue_dependents(rule.target);
     }
     return changed;
   }
@@ -569,17 +624,17 @@ private:
   // order. Exact rules cost about a tenth of a millisecond each (sums of fractions of
   // thousands of digits from the local polynomials), so this is for exact number types.
   void propagate_by_depth(std::size_t threads) {
-    const std::size_t R = m_rules.size();
+    const std::size_t R = m_rule_refs.size();
     std::vector<std::uint32_t> slot_depth(m_values.size(), 0), depth(R);
     std::uint32_t deepest = 0;
     for (std::size_t i = 0; i < R; ++i) {
-      const Rule& r = m_rules[i];
+      const Rule r = rule_of_ref(m_rule_refs[i], false);
       std::uint32_t d = 0;
       for (int j = 0; j < r.size(); ++j)
         d = (std::max)(d, slot_depth[r.sources[std::size_t(j)]]);
       if (slot_depth[r.target] != 0) { // a slot computed twice: keep the plan order
-        for (const Rule& rule : m_rules)
-          apply(rule);
+        for (const std::uint32_t ref : m_rule_refs)
+          apply_ref(ref);
         return;
       }
       depth[i] = slot_depth[r.target] = d + 1;
@@ -599,7 +654,7 @@ private:
     for (std::uint32_t d = 1; d <= deepest; ++d)
       internal::parallel_for_index(
           start[d + 1] - start[d], threads,
-          [&](std::size_t k) { apply(m_rules[order[start[d] + k]]); }, 16);
+          [&](std::size_t k) { apply_ref(m_rule_refs[order[start[d] + k]]); }, 16);
   }
 
   void apply(const Rule& r) {
@@ -641,8 +696,186 @@ private:
     return internal::barycentric_weights(x, a, b, c);
   }
 
-  void add_rule(Slot target, std::array<Slot, 3> sources, std::array<FT, 3> weights) {
-    m_rules.push_back(Rule{target, sources, weights});
+  // Appends a rule to the plan. An `implicit` rule is one implicit_rule() rebuilds from its
+  // target with the same sources and weights: in double only its target is kept.
+  void add_rule(Slot target, std::array<Slot, 3> sources, std::array<FT, 3> weights,
+                bool implicit = false) {
+    const double largest = largest_abs(weights);
+    const std::size_t k = std::size_t(kind(target));
+    m_max_weight = (std::max)(m_max_weight, largest);
+    m_max_weight_by_kind[k] = (std::max)(m_max_weight_by_kind[k], largest);
+    m_above_bound_by_kind[k] += largest > propagation_weight_bound ? 1 : 0;
+    if constexpr (!CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
+      if (implicit) {
+#ifdef CGAL_TRIANGULAR_SPLINE_CHECK_IMPLICIT_RULES
+        const Rule r = implicit_rule(target, true);
+        if (r.target != target || r.sources != sources || r.weights != weights)
+          throw std::logic_error("implicit rule of slot " + std::to_string(target) +
+                                 " differs from the plan's");
+#endif
+        m_rule_refs.push_back(target);
+        return;
+      }
+    }
+    CGAL_USE(implicit);
+    m_rule_refs.push_back(explicit_rule_bit | static_cast<std::uint32_t>(m_explicit_rules.size()));
+    m_explicit_rules.push_back(Rule{target, sources, weights});
+  }
+
+  // Calls f(rule, block_max) for every rule, in evaluation order except that the implicit
+  // rules of one kind in a row run on all cores: they never read each other's targets
+  // (corner rules read their frame, edge-middle rules corner-inner and star points, flip
+  // rules a free flip and edge-middle points), so each computes what it would in plan order.
+  // f may raise block_max; `largest` ends as the largest of them all (a maximum, whatever
+  // the blocks).
+  template <class F>
+  void for_each_rule_in_runs(const F& f, double& largest) const {
+    const std::size_t R = m_rule_refs.size();
+    constexpr std::size_t block = 4096;
+    std::vector<double> block_largest;
+    for (std::size_t begin = 0; begin < R;) {
+      const std::uint32_t first = m_rule_refs[begin];
+      if (first & explicit_rule_bit) {
+        f(m_explicit_rules[first & ~explicit_rule_bit], largest);
+        ++begin;
+        continue;
+      }
+      const int group = implicit_group(first);
+      std::size_t end = begin + 1;
+      while (end < R && !(m_rule_refs[end] & explicit_rule_bit) &&
+             implicit_group(m_rule_refs[end]) == group)
+        ++end;
+      const std::size_t blocks = (end - begin + block - 1) / block;
+      block_largest.assign(blocks, 0.0);
+      internal::parallel_for_index(
+          blocks, internal::thread_count(end - begin, 20000),
+          [&](std::size_t b) {
+            const std::size_t last = (std::min)(end, begin + (b + 1) * block);
+            for (std::size_t i = begin + b * block; i < last; ++i)
+              f(implicit_rule(m_rule_refs[i], true), block_largest[b]);
+          },
+          1);
+      for (const double m : block_largest)
+        largest = (std::max)(largest, m);
+      begin = end;
+    }
+  }
+
+  // The rule a reference stands for; without `weights` only its target and sources (the
+  // weights are then zero).
+  Rule rule_of_ref(std::uint32_t ref, bool weights) const {
+    if (ref & explicit_rule_bit)
+      return m_explicit_rules[ref & ~explicit_rule_bit];
+    return implicit_rule(ref, weights);
+  }
+  void apply_ref(std::uint32_t ref) {
+    if (ref & explicit_rule_bit)
+      apply(m_explicit_rules[ref & ~explicit_rule_bit]);
+    else
+      apply(implicit_rule(ref, true));
+  }
+  // 0: corner region (corner or star target), 1: edge-middle point, 2: flip point.
+  int implicit_group(Slot target) const {
+    const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
+    if (target < V)
+      return 0;
+    if (target < V + 4 * E) {
+      const std::size_t t = (target - V) % 4;
+      return (t == 0 || t == 3) ? 0 : 1;
+    }
+    return 2;
+  }
+
+  // The rule of `target` as build_plan_once() made it when it kept it implicit:
+  // - a corner or star point from the three free points of its vertex's corner region, in
+  //   the order choose_frame() gave them (m_frame_order), weights the barycentric
+  //   coordinates of its region point (the vertex, or the star's neighbour) in theirs;
+  // - the edge-middle point next to a regular end r of an interior edge (r, s) from
+  //   (CI_left, star_r, CI_right), weights those of s in (p_left, r, p_right);
+  // - the flip point of a face from the edge's free flip point and its two edge-middle
+  //   points, weights those of its apex in (the other apex, lo, hi).
+  Rule implicit_rule(Slot target, bool weights) const {
+    const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges();
+    Rule r{target, {{null_slot, null_slot, null_slot}}, {{FT(0), FT(0), FT(0)}}};
+    if (target < V + 4 * E) {
+      const std::size_t t = target < V ? 0 : (target - V) % 4;
+      if (target < V || t == 0 || t == 3) {
+        Index v;
+        const Point_2* x;
+        if (target < V) {
+          v = static_cast<Index>(target);
+          x = &m_domain.point(v);
+        } else {
+          const auto& ends = m_domain.edge(static_cast<Index>((target - V) / 4));
+          v = ends[t == 0 ? 0 : 1];
+          x = &m_domain.point(ends[t == 0 ? 1 : 0]);
+        }
+        const auto [nb, ne] = m_domain.neighbours(v);
+        const auto [eb, ee] = m_domain.star_edges(v);
+        CGAL_USE(ne);
+        std::array<Slot, 3> slot;
+        std::array<const Point_2*, 3> point;
+        std::size_t found = 0;
+        if (m_free[vertex_slot(v)]) {
+          slot[0] = vertex_slot(v);
+          point[0] = &m_domain.point(v);
+          found = 1;
+        }
+        for (auto e = eb; found < 3 && e != ee; ++e) {
+          const Slot s = star_slot(*e, v);
+          if (m_free[s]) {
+            slot[found] = s;
+            point[found] = &m_domain.point(nb[e - eb]);
+            ++found;
+          }
+        }
+        CGAL_assertion(found == 3);
+        const auto& p = frame_permutations[m_frame_order[v]];
+        r.sources = {{slot[p[0]], slot[p[1]], slot[p[2]]}};
+        if (weights)
+          r.weights = barycentric(*x, *point[p[0]], *point[p[1]], *point[p[2]]);
+        return r;
+      }
+      const Index e = static_cast<Index>((target - V) / 4);
+      const auto& ends = m_domain.edge(e);
+      const Index near = ends[t == 1 ? 0 : 1], far = ends[t == 1 ? 1 : 0];
+      const auto& ef = m_domain.edge_faces(e);
+      r.sources = {
+          {corner_inner_slot(ef[0], near), star_slot(e, near), corner_inner_slot(ef[1], near)}};
+      if (weights)
+        r.weights =
+            barycentric(m_domain.point(far), m_domain.point(m_domain.opposite_vertex(ef[0], e)),
+                        m_domain.point(near), m_domain.point(m_domain.opposite_vertex(ef[1], e)));
+      return r;
+    }
+    const std::size_t position = (target - V - 4 * E) % 6;
+    CGAL_assertion(position >= 3);
+    const Index f = static_cast<Index>((target - V - 4 * E) / 6);
+    const Index e = m_domain.face_edge(f, int(position) - 3);
+    const auto& ef = m_domain.edge_faces(e);
+    const Index other = ef[0] == f ? ef[1] : ef[0];
+    const auto& ends = m_domain.edge(e);
+    r.sources = {{flip_slot(other, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}};
+    if (weights)
+      r.weights = barycentric(m_domain.point(m_domain.opposite_vertex(f, e)),
+                              m_domain.point(m_domain.opposite_vertex(other, e)),
+                              m_domain.point(ends[0]), m_domain.point(ends[1]));
+    return r;
+  }
+  // The orders of a frame's three positions (increasing in the region) that choose_frame()
+  // can give.
+  static constexpr std::array<std::array<std::size_t, 3>, 6> frame_permutations = {
+      {{{0, 1, 2}}, {{0, 2, 1}}, {{1, 0, 2}}, {{1, 2, 0}}, {{2, 0, 1}}, {{2, 1, 0}}}};
+  static std::uint8_t frame_order_code(const std::array<std::size_t, 3>& frame) {
+    std::array<std::size_t, 3> sorted = frame;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::uint8_t c = 0; c < 6; ++c) {
+      const auto& p = frame_permutations[c];
+      if (sorted[p[0]] == frame[0] && sorted[p[1]] == frame[1] && sorted[p[2]] == frame[2])
+        return c;
+    }
+    CGAL_error_msg("a frame repeats a position");
+    return 0;
   }
 
   // The star slot of vertex v on edge e (v must be an end of e).
@@ -656,7 +889,9 @@ private:
     const auto& t = m_domain.face(f);
     return t[0] == v ? 0 : (t[1] == v ? 1 : 2);
   }
-  Slot corner_inner_slot(Index f, Index v) const { return face_slot(f, position_in_face(f, v)); }
+  Slot corner_inner_slot(Index f, Index v) const {
+    return face_slot(f, position_in_face(f, v));
+  }
   Slot flip_slot(Index f, Index e) const {
     for (int i = 0; i < 3; ++i)
       if (m_domain.face_edge(f, i) == e)
@@ -870,7 +1105,11 @@ private:
     // points, so this ends).
     for (;;) {
       ++m_plan_rounds;
-      m_rules.clear();
+      m_rule_refs.clear();
+      m_explicit_rules.clear();
+      m_max_weight = 0;
+      m_max_weight_by_kind.fill(0);
+      m_above_bound_by_kind.fill(0);
       // Auxiliary slots are made anew by each round, counted by m_free; the values are
       // allocated once the count is known (growing them by the auxiliary slots reallocated
       // and copied all control values: 200 MB at 10^6 points).
@@ -881,21 +1120,27 @@ private:
       if (order_rules(thin_edge_of_rule, allow_thin))
         break;
     }
+    if (m_free.size() >= explicit_rule_bit)
+      throw Invalid_input("spline: domain too large: more than 2^31 slots");
+    // Appended to (auxiliary slots, stored rules, re-routed frames): a doubled capacity
+    // would last as long as the spline (100 MB at 10^6 points).
+    m_free.shrink_to_fit();
+    m_rule_refs.shrink_to_fit();
+    m_explicit_rules.shrink_to_fit();
+    m_frames.shrink_to_fit();
     m_values.assign(m_free.size(), zero());
     m_free_slots.reserve(std::size_t(std::count(m_free.begin(), m_free.end(), char(1))));
     for (Slot s = 0; s < m_free.size(); ++s)
       if (m_free[s])
         m_free_slots.push_back(s);
-    m_max_weight = 0;
-    for (const Rule& r : m_rules)
-      m_max_weight = (std::max)(m_max_weight, largest_abs(r.weights));
   }
 
   void build_plan_once(const std::vector<char>& allow_thin, std::vector<Index>& thin_edge_of_rule) {
     const Index V = static_cast<Index>(m_domain.number_of_vertices());
     const Index E = static_cast<Index>(m_domain.number_of_edges());
     const Index F = static_cast<Index>(m_domain.number_of_faces());
-    m_rules.reserve(3 * std::size_t(V) + 4 * std::size_t(E));
+    m_rule_refs.reserve(3 * std::size_t(V) + 4 * std::size_t(E));
+    m_frame_order.assign(V, 0);
 
     // 1. Corner regions (Lemma 3.3.2): every point of the region is the affine image of its
     // domain point under the map fixed by the three prescribed points.
@@ -913,16 +1158,17 @@ private:
       const std::array<std::size_t, 3> frame = choose_frame(v);
       for (std::size_t k : frame)
         m_free[region[k]] = 1;
+      m_frame_order[v] = frame_order_code(frame);
       const Point_2 &a = *region_points[frame[0]], &b = *region_points[frame[1]],
                     &c = *region_points[frame[2]];
       for (std::size_t k = 0; k < region.size(); ++k) {
         if (k == frame[0] || k == frame[1] || k == frame[2])
           continue;
         add_rule(region[k], {{region[frame[0]], region[frame[1]], region[frame[2]]}},
-                 barycentric(*region_points[k], a, b, c));
+                 barycentric(*region_points[k], a, b, c), true);
       }
     }
-    thin_edge_of_rule.assign(m_rules.size(), Domain::null_index);
+    thin_edge_of_rule.assign(m_rule_refs.size(), Domain::null_index);
 
     std::vector<Edge_route> routes = route_edges(allow_thin);
     m_frames.clear();
@@ -1124,7 +1370,7 @@ private:
         }
         add_rule(edge_middle_slot(e, r),
                  {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
-                 barycentric(m_domain.point(s), pl, m_domain.point(r), pr));
+                 barycentric(m_domain.point(s), pl, m_domain.point(r), pr), true);
         thin_edge_of_rule.push_back(Domain::null_index);
       }
     }
@@ -1176,7 +1422,7 @@ private:
       add_rule(
           flip_slot(other_face, e),
           {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
-          left_free ? right_from_left : left_from_right);
+          left_free ? right_from_left : left_from_right, true);
       thin_edge_of_rule.push_back(Domain::null_index);
     }
   }
@@ -1420,8 +1666,9 @@ private:
   // the part of the depth-first stack above the repeated rule is the cycle: forbidding every
   // thin edge on the stack left thousands of thin frames regular, with weights up to 10^3).
   bool order_rules(const std::vector<Index>& thin_edge_of_rule, std::vector<char>& allow_thin) {
-    const std::size_t R = m_rules.size();
+    const std::size_t R = m_rule_refs.size();
     constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+    auto sources_of = [&](std::size_t i) { return rule_of_ref(m_rule_refs[i], false); };
     // 1. One pass in emission order: a rule whose sources are all free or computed by an
     // earlier kept rule stays where it is (all rules but those reading a thin link's edge
     // point, and what depends on them). Only the others need the depth-first search.
@@ -1431,7 +1678,7 @@ private:
     std::vector<unsigned char> state(R, 0); // 0 deferred, 1 on the stack, 2 done
     std::vector<std::uint32_t> deferred;
     for (std::size_t i = 0; i < R; ++i) {
-      const Rule& rule = m_rules[i];
+      const Rule rule = sources_of(i);
       bool sources_ready = true;
       for (int j = 0; j < rule.size(); ++j)
         sources_ready = sources_ready && ready[rule.sources[std::size_t(j)]];
@@ -1449,7 +1696,7 @@ private:
     std::unordered_map<Slot, std::uint32_t> rule_of;
     rule_of.reserve(deferred.size());
     for (std::uint32_t i : deferred)
-      rule_of.emplace(m_rules[i].target, i);
+      rule_of.emplace(sources_of(i).target, i);
     std::vector<std::uint32_t> order;
     order.reserve(deferred.size());
     std::vector<std::pair<std::uint32_t, int>> stack; // rule, next source to visit
@@ -1461,8 +1708,9 @@ private:
       state[root] = 1;
       while (!stack.empty()) {
         auto& [rule, next] = stack.back();
-        if (next < m_rules[rule].size()) {
-          const Slot slot = m_rules[rule].sources[std::size_t(next++)];
+        const Rule sources = sources_of(rule);
+        if (next < sources.size()) {
+          const Slot slot = sources.sources[std::size_t(next++)];
           if (ready[slot]) // free, or computed by a kept rule: no lookup
             continue;
           const auto found = rule_of.find(slot);
@@ -1503,19 +1751,19 @@ private:
       return false;
     // 3. The kept rules move up in place (a sorted copy of all rules was the largest
     // allocation of a whole c1 run), the deferred ones follow in their order.
-    std::vector<Rule> moved;
+    std::vector<std::uint32_t> moved;
     moved.reserve(order.size());
     for (std::uint32_t i : order)
-      moved.push_back(m_rules[i]);
+      moved.push_back(m_rule_refs[i]);
     std::size_t w = 0;
     for (std::size_t i = 0, d = 0; i < R; ++i) {
       if (d < deferred.size() && deferred[d] == i) {
         ++d;
         continue;
       }
-      m_rules[w++] = m_rules[i];
+      m_rule_refs[w++] = m_rule_refs[i];
     }
-    std::copy(moved.begin(), moved.end(), m_rules.begin() + std::ptrdiff_t(w));
+    std::copy(moved.begin(), moved.end(), m_rule_refs.begin() + std::ptrdiff_t(w));
     return true;
   }
 
@@ -1523,17 +1771,22 @@ private:
   // spline that is only propagated never pays for them.
   void build_dependents() {
     m_dependent_offsets.assign(m_values.size() + 1, 0);
-    for (const Rule& r : m_rules)
-      for (int i = 0; i < r.size(); ++i)
-        ++m_dependent_offsets[r.sources[std::size_t(i)] + 1];
+    const std::size_t R = m_rule_refs.size();
+    for (std::size_t i = 0; i < R; ++i) {
+      const Rule r = rule_of_ref(m_rule_refs[i], false);
+      for (int j = 0; j < r.size(); ++j)
+        ++m_dependent_offsets[r.sources[std::size_t(j)] + 1];
+    }
     for (std::size_t s = 0; s < m_values.size(); ++s)
       m_dependent_offsets[s + 1] += m_dependent_offsets[s];
     m_dependents.assign(m_dependent_offsets.back(), 0);
     std::vector<std::size_t> fill(m_dependent_offsets.begin(), m_dependent_offsets.end() - 1);
-    for (std::size_t i = 0; i < m_rules.size(); ++i)
-      for (int j = 0; j < m_rules[i].size(); ++j)
-        m_dependents[fill[m_rules[i].sources[std::size_t(j)]]++] = static_cast<std::uint32_t>(i);
-    m_queued.assign(m_rules.size(), 0);
+    for (std::size_t i = 0; i < R; ++i) {
+      const Rule r = rule_of_ref(m_rule_refs[i], false);
+      for (int j = 0; j < r.size(); ++j)
+        m_dependents[fill[r.sources[std::size_t(j)]]++] = static_cast<std::uint32_t>(i);
+    }
+    m_queued.assign(R, 0);
   }
 
   Domain m_domain;
@@ -1542,10 +1795,17 @@ private:
   std::vector<Value> m_values;
   std::vector<char> m_free;
   std::vector<Slot> m_free_slots;
-  std::vector<Rule> m_rules;
+  // The plan's rules in evaluation order, one reference each: an implicit rule's target
+  // (implicit_rule()), or explicit_rule_bit | its index in m_explicit_rules.
+  static constexpr std::uint32_t explicit_rule_bit = std::uint32_t(1) << 31;
+  std::vector<std::uint32_t> m_rule_refs;
+  std::vector<Rule> m_explicit_rules;
+  std::vector<std::uint8_t> m_frame_order; // frame_order_code() of each vertex's frame
   Degenerate_frame_analysis<Index> m_degenerate;
   std::vector<Degenerate_frame> m_frames;
   double m_max_weight = 0;
+  std::array<double, 6> m_max_weight_by_kind{};       // by Slot_kind of the target
+  std::array<std::size_t, 6> m_above_bound_by_kind{}; // rules above the bound, by kind
   int m_plan_rounds = 0; // plan builds: 1 + the rebuilds that broke dependency cycles
   std::vector<Index> m_near_singular;
   struct Closing {

@@ -111,7 +111,7 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
   // A rule's row: the merge of its (at most three) sources' sorted rows, equal unknowns
   // summed in source order.
   constexpr int max_sources = 3;
-  for (const auto& rule : spline.rules()) {
+  spline.for_each_rule([&](const auto& rule) {
     std::array<std::size_t, max_sources> at{}, end{};
     std::array<double, max_sources> w{};
     std::array<double, D> k;
@@ -131,7 +131,7 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
     }
     a.constant[rule.target] = k;
     if (total == 0)
-      continue; // no unknown reaches the target: a constant
+      return; // no unknown reaches the target: a constant
     const std::size_t begin = a.unknown.size();
     a.unknown.resize(begin + total); // may move the arrays: indices, not pointers, above
     a.weight.resize(begin + total);
@@ -153,11 +153,11 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
     a.unknown.resize(out);
     a.weight.resize(out);
     if (out == begin)
-      continue; // the unknowns cancelled
+      return; // the unknowns cancelled
     a.row[rule.target] = static_cast<std::uint32_t>(a.row_begin.size());
     a.row_begin.push_back(begin);
     a.row_size.push_back(std::uint32_t(out - begin));
-  }
+  });
   return a;
 }
 
