@@ -35,7 +35,8 @@ namespace internal {
 // Every slot's value as an affine function of the unknowns, by running the rules
 // symbolically: value(s) = sum_i weight[i] x[unknown[i]] + constant[s] over the entries i of
 // slot s's row. The unknowns are the free slots, without the corners when they interpolate
-// the data (`corners_fixed`) and without the slots for which fixed(s, value) gives a value.
+// the data (`corners_fixed`) and without the slots for which fixed(s, value) gives a value,
+// which affine_slots() sets in the spline (a list of them took 16 bytes per free slot).
 // The rows lie in two flat arrays (about 2.8 entries per slot on random points; a vector
 // per slot cost 2.6 s and 1 GB at 10^5 points), each sorted by unknown.
 template <class Value>
@@ -53,7 +54,6 @@ struct Affine_slots {
   std::vector<int> unknown;
   std::vector<double> weight;
   std::vector<std::array<double, D>> constant;
-  std::vector<std::pair<std::uint32_t, Value>> fixed; // the free slots that are not unknowns
 
   bool has_row(std::size_t s) const { return row[s] != no_row; }
   std::size_t row_length(std::size_t s) const { return has_row(s) ? row_size[row[s]] : 0; }
@@ -70,7 +70,7 @@ struct Affine_slots {
 };
 
 template <class GeomTraits, class Value, class Fixed>
-Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spline,
+Affine_slots<Value> affine_slots(C1_quintic_spline<GeomTraits, Value>& spline,
                                  const std::vector<Value>& values, bool corners_fixed,
                                  const Fixed& fixed) {
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
@@ -97,7 +97,7 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
     }
     for (int c = 0; c < D; ++c)
       a.constant[s][std::size_t(c)] = CGAL::to_double(Traits::coordinate(given, c));
-    a.fixed.emplace_back(s, given);
+    spline.set_free_value(s, given);
   }
   // The global fits make every slot's row reach unknowns, about three entries each: reserved
   // at once (growing them copied 1.5 times their final size). A local solve (the adaptive
@@ -158,6 +158,11 @@ Affine_slots<Value> affine_slots(const C1_quintic_spline<GeomTraits, Value>& spl
     a.row_begin.push_back(begin);
     a.row_size.push_back(std::uint32_t(out - begin));
   });
+  // Grown by appends: their doubled capacity would last through the solve.
+  a.row_begin.shrink_to_fit();
+  a.row_size.shrink_to_fit();
+  a.unknown.shrink_to_fit();
+  a.weight.shrink_to_fit();
   return a;
 }
 
@@ -256,8 +261,6 @@ Schwarz_statistics minimise_slot_quadratic(
   using Point = CGAL::Simple_cartesian<double>::Point_2;
   constexpr int D = Traits::dimension;
   const auto& domain = spline.domain();
-  for (const auto& [s, value] : a.fixed)
-    spline.set_free_value(s, value);
   if (a.unknowns == 0)
     return {};
   const auto indices = bernstein_indices(5);
