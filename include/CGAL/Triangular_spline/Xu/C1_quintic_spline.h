@@ -311,8 +311,9 @@ public:
   /// returns rule `i` in evaluation order. In `double` the spline stores only the rules of
   /// re-routed frames and of near-singular vertices; every other rule (corner regions,
   /// edge-middle points of regular ends, flip points) is rebuilt from the domain when read,
-  /// with the very weights the plan computed: 4 bytes per rule instead of 40, 0.55 GB less
-  /// at 10^6 points. Exact number types keep every rule.
+  /// with the very weights the plan computed: 4 bytes per rule instead of 40 (a `tspline c1`
+  /// run on 10^6 random points peaks at 781 MB instead of 1286 MB). Exact number types keep
+  /// every rule.
   /// \pre `i < number_of_rules()`
   /// \param i the position of the rule in evaluation order
   /// \returns the rule
