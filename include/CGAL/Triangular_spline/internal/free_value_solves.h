@@ -339,16 +339,29 @@ Schwarz_statistics minimise_slot_quadratic(
   const Eigen::MatrixXd U3 = gram_factor(3), U4 = gram_factor(4);
   const auto cubic = bernstein_indices(3), quartic = bernstein_indices(4);
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  Rows Y, Y0; // the squares' rows: in the unknowns, and constants
-  Eigen::Matrix<double, 15, 21, Eigen::RowMajor> difference;
-  Rows DR;
-  Eigen::MatrixXd DC(15, D), C(Eigen::Index(n), D);
   struct Entry {
     int slot, column; // 0 .. 20, 0 .. k - 1
     double weight;
   };
-  std::vector<Entry> entries;
-  auto face_terms = [&](std::uint32_t f, Face_terms& terms) {
+  // one per worker of schwarz_minimise() (windows are solved on all cores)
+  struct Scratch {
+    Rows Y, Y0; // the squares' rows: in the unknowns, and constants
+    Eigen::Matrix<double, 15, 21, Eigen::RowMajor> difference;
+    Rows DR;
+    Eigen::MatrixXd DC, C;
+    std::vector<Entry> entries;
+  };
+  std::vector<Scratch> scratch(schwarz_workers(options));
+  for (Scratch& own : scratch) {
+    own.DC.resize(15, D);
+    own.C.resize(Eigen::Index(n), D);
+  }
+  auto face_terms = [&](std::uint32_t f, Face_terms& terms, std::size_t worker) {
+    Scratch& own = scratch[worker];
+    Rows &Y = own.Y, &Y0 = own.Y0, &DR = own.DR;
+    auto& difference = own.difference;
+    Eigen::MatrixXd &DC = own.DC, &C = own.C;
+    std::vector<Entry>& entries = own.entries;
     std::array<Slot, n> slot;
     auto& columns = terms.columns;
     columns.clear();

@@ -5,6 +5,7 @@
 #define CGAL_TRIANGULAR_SPLINE_INTERNAL_SCHWARZ_SOLVER_H
 
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/parallel.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -15,6 +16,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -30,10 +33,14 @@ namespace internal {
 // current value. Each window solve can only lower the objective, and the sweeps converge
 // to the global minimiser.
 //
-// The sweeps visit the windows one after the other in the same order, each factorized
-// again (no factorization is kept: memory is one window's). Windows that couple beyond
-// their neighbours are common: a vertex with a fan of slivers (a corner of the data's
-// square, a hull vertex) couples windows along a whole side. Sweeps pipelined so as to
+// Each sweep visits the windows by colours: two windows have different colours when one
+// solves for an unknown that the other's faces read, so the windows of one colour are
+// independent and are solved at the same time on all cores, in any order, with the same
+// result (greedy colouring in cell order: 17 colours for the 196 windows of 10^5 random
+// points). Each window is factorized again (no factorization is kept: memory is one
+// window's per core). Windows that couple beyond their neighbours are common: a vertex with
+// a fan of slivers (a corner of the data's square, a hull vertex) couples windows along a
+// whole side. Sweeps pipelined so as to
 // reuse each window's factorization (pass p of a window as soon as its neighbouring
 // cells had pass p - 1) see such couplings about a column of cells per pass late: at
 // 10^5 noisy points the control values stayed 6.8e-5 from the direct solve after 4 to 6
@@ -51,13 +58,21 @@ struct Schwarz_options {
   int sweeps = 0;
   double tolerance = 1e-8;
   int max_sweeps = 8;
+  std::size_t threads = 0; // 0: one per core (the result does not depend on it)
 };
+
+// The number of window solves that run at once (and of face_terms' scratch spaces).
+inline std::size_t schwarz_workers(const Schwarz_options& options) {
+  return options.threads > 0 ? options.threads
+                             : std::size_t((std::max)(1u, std::thread::hardware_concurrency()));
+}
 
 // What the solver did (Fit_statistics, tests and benchmarks).
 struct Schwarz_statistics {
   enum Method { NONE, DIRECT, WINDOWS };
   Method method = NONE;
   std::size_t windows = 0;       // windows per sweep; 0 for the direct solve
+  std::size_t colours = 0;       // colours of the windows (0 for the direct solve)
   int sweeps = 0;                // sweeps done (1 for the direct solve)
   std::size_t window_solves = 0; // windows factorized and solved, over all sweeps
   double last_change = 0;        // largest change of an unknown in the last sweep
@@ -76,8 +91,9 @@ struct Face_terms {
 // place from its initial values).
 //   owner[j]: the domain vertex owning unknown j (it decides the windows j belongs to);
 //   unknowns_of(f, out): appends the unknowns that face f's terms depend on;
-//   face_terms(f, terms): face f's terms (Face_terms). A window's system takes them with
-//     the unknowns beyond it at their values in x.
+//   face_terms(f, terms, worker): face f's terms (Face_terms); worker < schwarz_workers()
+//     names the scratch space of the calling thread. A window's system takes them with the
+//     unknowns beyond it at their values in x.
 // `vertices`: the number of domain vertices, `neighbours(v, out)` their adjacency and
 // `position(v)` their coordinates (std::array<double, 2>), for the windows; `scale` the
 // unit of options.tolerance.
@@ -105,68 +121,92 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
     for (std::size_t j = 0; j < n; ++j)
       owned[next[owner[j]]++] = std::uint32_t(j);
   }
-  // Buffers kept from window to window.
-  std::vector<int> local(n, -1);
-  std::vector<std::uint32_t> unknowns, involved;
-  std::vector<Eigen::Triplet<double>> triplets;
-  Face_terms terms;
-  Eigen::SparseMatrix<double> matrix;
-  // The upper triangle, ordered by approximate minimum degree. (Ordering the graph of the
-  // vertices instead, each vertex's unknowns together, was slower:
-  // 10^5 random points, 86 against 64 ms per window of the energy fit.)
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper> factor;
-  Eigen::MatrixXd rhs, y;
+  // Buffers kept from window to window, one set per worker (each of a window's size: a
+  // worker per core on a large machine must not cost an array of all unknowns).
+  struct Worker {
+    std::vector<std::uint32_t> unknowns;
+    std::vector<std::pair<std::uint32_t, int>> sorted; // (unknown, local index), increasing
+    std::vector<int> columns; // the local indices of a face's columns, -1 beyond the window
+    std::vector<Eigen::Triplet<double>> triplets;
+    Face_terms terms;
+    Eigen::SparseMatrix<double> matrix;
+    // The upper triangle, ordered by approximate minimum degree. (Ordering the graph of the
+    // vertices instead, each vertex's unknowns together, was slower:
+    // 10^5 random points, 86 against 64 ms per window of the energy fit.)
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper> factor;
+    Eigen::MatrixXd rhs, y;
+    double change = 0;
+    std::size_t solves = 0;
+  };
+  const std::size_t workers = schwarz_workers(options);
+  std::vector<Worker> worker(workers);
+  std::vector<std::uint32_t> involved;
   // Minimises over the unknowns owned by `window_vertices` (faces `window_faces`: those
   // whose terms involve them), the others at their values in x; returns the largest change
-  // of an unknown, calling moved(j) after unknown j is written.
-  auto solve = [&](const std::vector<std::uint32_t>& window_vertices,
-                   const std::vector<std::uint32_t>& window_faces, const auto& moved) {
+  // of an unknown, calling moved(j) after unknown j is written. Writes only the unknowns it
+  // solves for (and what moved(j) keeps for them). The local unknowns are numbered in the
+  // order of the window's vertices.
+  auto solve = [&](std::size_t w, const std::uint32_t* window_vertices, std::size_t vertex_count,
+                   const std::uint32_t* window_faces, std::size_t face_count, const auto& moved) {
+    Worker& k = worker[w];
+    auto& unknowns = k.unknowns;
     unknowns.clear();
-    for (std::uint32_t v : window_vertices)
-      for (std::size_t i = unknown_start[v]; i < unknown_start[v + 1]; ++i) {
-        local[owned[i]] = int(unknowns.size());
-        unknowns.push_back(owned[i]);
+    k.sorted.clear();
+    for (std::size_t i = 0; i < vertex_count; ++i) {
+      const std::uint32_t v = window_vertices[i];
+      for (std::size_t u = unknown_start[v]; u < unknown_start[v + 1]; ++u) {
+        k.sorted.emplace_back(owned[u], int(unknowns.size()));
+        unknowns.push_back(owned[u]);
       }
+    }
+    std::sort(k.sorted.begin(), k.sorted.end());
+    auto local_index = [&](int j) {
+      const auto at = std::lower_bound(k.sorted.begin(), k.sorted.end(),
+                                       std::pair<std::uint32_t, int>(std::uint32_t(j), -1));
+      return at != k.sorted.end() && at->first == std::uint32_t(j) ? at->second : -1;
+    };
     const Eigen::Index size = Eigen::Index(unknowns.size());
-    rhs.setZero(size, D);
-    triplets.clear();
-    for (std::uint32_t f : window_faces) {
-      face_terms(f, terms);
-      const auto& columns = terms.columns;
-      const Eigen::Index k = Eigen::Index(columns.size());
-      for (Eigen::Index i = 0; i < k; ++i) {
-        const int li = local[std::size_t(columns[std::size_t(i)])];
-        if (li < 0)
+    k.rhs.setZero(size, D);
+    k.triplets.clear();
+    for (std::size_t i = 0; i < face_count; ++i) {
+      face_terms(window_faces[i], k.terms, w);
+      const auto& columns = k.terms.columns;
+      const Eigen::Index m = Eigen::Index(columns.size());
+      k.columns.resize(columns.size());
+      for (std::size_t a = 0; a < columns.size(); ++a)
+        k.columns[a] = local_index(columns[a]);
+      for (Eigen::Index a = 0; a < m; ++a) {
+        const int la = k.columns[std::size_t(a)];
+        if (la < 0)
           continue;
-        rhs.row(li) += terms.B.row(i);
-        for (Eigen::Index j = 0; j < k; ++j) {
-          const double h = j <= i ? terms.H(i, j) : terms.H(j, i);
+        k.rhs.row(la) += k.terms.B.row(a);
+        for (Eigen::Index b = 0; b < m; ++b) {
+          const double h = b <= a ? k.terms.H(a, b) : k.terms.H(b, a);
           if (h == 0)
             continue;
-          const int lj = local[std::size_t(columns[std::size_t(j)])];
-          if (lj < 0) // beyond the window: at its current value
-            rhs.row(li) -= h * x.row(Eigen::Index(columns[std::size_t(j)]));
-          else if (li <= lj)
-            triplets.emplace_back(li, lj, h);
+          const int lb = k.columns[std::size_t(b)];
+          if (lb < 0) // beyond the window: at its current value
+            k.rhs.row(la) -= h * x.row(Eigen::Index(columns[std::size_t(b)]));
+          else if (la <= lb)
+            k.triplets.emplace_back(la, lb, h);
         }
       }
     }
-    matrix.resize(size, size);
-    matrix.setFromTriplets(triplets.begin(), triplets.end());
-    factor.compute(matrix);
-    if (factor.info() != Eigen::Success)
+    k.matrix.resize(size, size);
+    k.matrix.setFromTriplets(k.triplets.begin(), k.triplets.end());
+    k.factor.compute(k.matrix);
+    if (k.factor.info() != Eigen::Success)
       throw Invalid_input(std::string("fit: the ") + what + " system could not be factorized");
-    y = factor.solve(rhs);
+    k.y = k.factor.solve(k.rhs);
     double change = 0;
     for (Eigen::Index i = 0; i < size; ++i) {
       const auto j = std::size_t(unknowns[std::size_t(i)]);
       for (Eigen::Index d = 0; d < D; ++d) {
-        if (!std::isfinite(y(i, d)))
+        if (!std::isfinite(k.y(i, d)))
           throw Invalid_input(std::string("fit: the ") + what + " system is singular");
-        change = (std::max)(change, std::abs(y(i, d) - x(Eigen::Index(j), d)));
-        x(Eigen::Index(j), d) = y(i, d);
+        change = (std::max)(change, std::abs(k.y(i, d) - x(Eigen::Index(j), d)));
+        x(Eigen::Index(j), d) = k.y(i, d);
       }
-      local[j] = -1;
       moved(j);
     }
     return change;
@@ -177,7 +217,8 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
       all_vertices[v] = std::uint32_t(v);
     for (std::size_t f = 0; f < faces; ++f)
       all_faces[f] = std::uint32_t(f);
-    statistics.last_change = solve(all_vertices, all_faces, [](std::size_t) {});
+    statistics.last_change = solve(0, all_vertices.data(), all_vertices.size(), all_faces.data(),
+                                   all_faces.size(), [](std::size_t) {});
     statistics.method = Schwarz_statistics::DIRECT;
     statistics.sweeps = 1;
     statistics.window_solves = 1;
@@ -236,13 +277,128 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
           std::size_t(cell(p[1], lo[1], hi[1], ny))]
         .push_back(std::uint32_t(v));
   }
+  // The windows, once: window c's vertices (its cell and margin_rings rings) and its faces
+  // (those whose terms involve the unknowns of its vertices), increasing, in flat arrays;
+  // cells without unknowns make no window.
+  std::vector<std::size_t> vertex_begin{0}, face_begin{0};
+  std::vector<std::uint32_t> window_vertex, window_face;
+  {
+    std::vector<int> ring(vertices, -1);
+    std::vector<char> face_mark(faces, 0);
+    std::vector<std::uint32_t> around, faces_of, adjacent;
+    for (const auto& core : cells) {
+      if (core.empty())
+        continue;
+      around = core;
+      for (std::uint32_t v : core)
+        ring[v] = 0;
+      std::size_t begin = 0;
+      for (int r = 1; r <= options.margin_rings; ++r) {
+        const std::size_t end = around.size();
+        for (std::size_t i = begin; i < end; ++i) {
+          adjacent.clear();
+          neighbours(around[i], adjacent);
+          for (std::uint32_t w : adjacent)
+            if (ring[w] < 0) {
+              ring[w] = r;
+              around.push_back(w);
+            }
+        }
+        begin = end;
+      }
+      bool any = false;
+      faces_of.clear();
+      for (std::uint32_t v : around) {
+        ring[v] = -1;
+        any = any || unknown_start[v + 1] > unknown_start[v];
+        for (std::size_t i = face_start[v]; i < face_start[v + 1]; ++i)
+          if (!face_mark[vertex_faces[i]]) {
+            face_mark[vertex_faces[i]] = 1;
+            faces_of.push_back(vertex_faces[i]);
+          }
+      }
+      for (std::uint32_t f : faces_of)
+        face_mark[f] = 0;
+      if (!any)
+        continue;
+      // faces in increasing order: the same sums whatever the order of the rings
+      std::sort(faces_of.begin(), faces_of.end());
+      window_vertex.insert(window_vertex.end(), around.begin(), around.end());
+      window_face.insert(window_face.end(), faces_of.begin(), faces_of.end());
+      vertex_begin.push_back(window_vertex.size());
+      face_begin.push_back(window_face.size());
+    }
+  }
+  const std::size_t windows = vertex_begin.size() - 1;
+  statistics.windows = windows;
+  // Colours: window b conflicts with every window holding a vertex that owns an unknown b's
+  // faces read (that window writes what b reads), and conversely.
+  std::vector<std::uint32_t> colour(windows, 0);
+  std::size_t colours = 0;
+  {
+    std::vector<std::size_t> containing_start(vertices + 1, 0);
+    for (std::uint32_t v : window_vertex)
+      ++containing_start[v + 1];
+    for (std::size_t v = 0; v < vertices; ++v)
+      containing_start[v + 1] += containing_start[v];
+    std::vector<std::uint32_t> containing(window_vertex.size());
+    {
+      std::vector<std::size_t> next(containing_start.begin(), containing_start.end() - 1);
+      for (std::size_t c = 0; c < windows; ++c)
+        for (std::size_t i = vertex_begin[c]; i < vertex_begin[c + 1]; ++i)
+          containing[next[window_vertex[i]]++] = std::uint32_t(c);
+    }
+    // (each pair listed at most twice)
+    std::vector<std::vector<std::uint32_t>> conflicts(windows);
+    std::vector<std::size_t> seen(vertices, windows), met(windows, windows);
+    for (std::size_t c = 0; c < windows; ++c) {
+      auto reach = [&](std::uint32_t v) {
+        if (seen[v] == c)
+          return;
+        seen[v] = c;
+        for (std::size_t k = containing_start[v]; k < containing_start[v + 1]; ++k) {
+          const std::uint32_t b = containing[k];
+          if (b != c && met[b] != c) {
+            met[b] = c;
+            conflicts[c].push_back(b);
+            conflicts[b].push_back(std::uint32_t(c));
+          }
+        }
+      };
+      for (std::size_t i = vertex_begin[c]; i < vertex_begin[c + 1]; ++i)
+        reach(window_vertex[i]);
+      for (std::size_t i = face_begin[c]; i < face_begin[c + 1]; ++i) {
+        involved.clear();
+        unknowns_of(window_face[i], involved);
+        for (std::uint32_t j : involved)
+          reach(owner[j]);
+      }
+    }
+    std::vector<char> taken;
+    for (std::size_t c = 0; c < windows; ++c) {
+      taken.assign(colours + 1, 0);
+      for (std::uint32_t b : conflicts[c])
+        if (b < c)
+          taken[colour[b]] = 1;
+      std::uint32_t k = 0;
+      while (taken[k])
+        ++k;
+      colour[c] = k;
+      colours = (std::max)(colours, std::size_t(k) + 1);
+    }
+  }
+  statistics.colours = colours;
+  std::vector<std::vector<std::uint32_t>> by_colour(colours);
+  for (std::size_t c = 0; c < windows; ++c)
+    by_colour[colour[c]].push_back(std::uint32_t(c));
   // The tolerance: a window is solved again when, since its last solve, an unknown it
-  // solves for or reads moved by more than `threshold` (moved_at[j]: the window solve after
-  // which x_j last left the ball of that radius around anchor[j], its value then).
+  // solves for or reads moved by more than `threshold` (moved_at[j]: the colour phase in
+  // which x_j last left the ball of that radius around anchor[j], its value then). Windows
+  // of one phase read nothing the others write.
   const double threshold = options.tolerance * scale;
   const bool fixed_sweeps = options.sweeps > 0;
   const int most = fixed_sweeps ? options.sweeps : (std::max)(1, options.max_sweeps);
-  std::vector<std::uint64_t> moved_at(fixed_sweeps ? 0 : n, 0), solved_at(cells.size(), 0);
+  std::vector<std::uint64_t> moved_at(fixed_sweeps ? 0 : n, 0), solved_at(windows, 0);
   Eigen::MatrixXd anchor;
   if (!fixed_sweeps)
     anchor = x;
@@ -256,67 +412,49 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
       moved_at[j] = clock;
     }
   };
-  std::vector<int> ring(vertices, -1);
-  std::vector<char> face_mark(faces, 0);
-  std::vector<std::uint32_t> window_vertices, window_faces, adjacent;
   statistics.method = Schwarz_statistics::WINDOWS;
+  std::vector<std::vector<std::uint32_t>> read(workers);
   for (int sweep = 0; sweep < most; ++sweep) {
-    double change = 0;
-    statistics.windows = 0;
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-      const auto& core = cells[c];
-      if (core.empty())
-        continue;
-      window_vertices = core;
-      for (std::uint32_t v : core)
-        ring[v] = 0;
-      std::size_t begin = 0;
-      for (int r = 1; r <= options.margin_rings; ++r) {
-        const std::size_t end = window_vertices.size();
-        for (std::size_t i = begin; i < end; ++i) {
-          adjacent.clear();
-          neighbours(window_vertices[i], adjacent);
-          for (std::uint32_t w : adjacent)
-            if (ring[w] < 0) {
-              ring[w] = r;
-              window_vertices.push_back(w);
+    for (Worker& k : worker)
+      k.change = 0;
+    for (const auto& same : by_colour) {
+      ++clock;
+      // Window i of this colour runs on worker i % threads (parallel_for_index() with
+      // blocks of 1 interleaves the indices over the threads).
+      const std::size_t threads = (std::min)(workers, same.size());
+      parallel_for_index(
+          same.size(), threads,
+          [&](std::size_t i) {
+            const std::size_t w = i % threads, c = same[i];
+            bool stale = sweep == 0 || fixed_sweeps;
+            for (std::size_t v = vertex_begin[c]; v < vertex_begin[c + 1] && !stale; ++v) {
+              const std::uint32_t u = window_vertex[v];
+              for (std::size_t o = unknown_start[u]; o < unknown_start[u + 1]; ++o)
+                stale = stale || moved_at[owned[o]] > solved_at[c];
             }
-        }
-        begin = end;
-      }
-      for (std::uint32_t v : window_vertices)
-        ring[v] = -1;
-      window_faces.clear();
-      bool any = false, stale = sweep == 0 || fixed_sweeps;
-      for (std::uint32_t v : window_vertices) {
-        for (std::size_t i = unknown_start[v]; i < unknown_start[v + 1]; ++i) {
-          any = true;
-          stale = stale || moved_at[owned[i]] > solved_at[c];
-        }
-        for (std::size_t i = face_start[v]; i < face_start[v + 1]; ++i)
-          if (!face_mark[vertex_faces[i]]) {
-            face_mark[vertex_faces[i]] = 1;
-            window_faces.push_back(vertex_faces[i]);
-          }
-      }
-      for (std::uint32_t f : window_faces)
-        face_mark[f] = 0;
-      if (!any)
-        continue;
-      ++statistics.windows;
-      for (std::size_t i = 0; i < window_faces.size() && !stale; ++i) {
-        involved.clear();
-        unknowns_of(window_faces[i], involved);
-        for (std::uint32_t j : involved)
-          stale = stale || moved_at[j] > solved_at[c];
-      }
-      if (!stale)
-        continue;
-      // faces in increasing order: the same sums whatever the order of the rings
-      std::sort(window_faces.begin(), window_faces.end());
-      solved_at[c] = ++clock;
-      change = (std::max)(change, solve(window_vertices, window_faces, moved));
-      ++statistics.window_solves;
+            for (std::size_t f = face_begin[c]; f < face_begin[c + 1] && !stale; ++f) {
+              read[w].clear();
+              unknowns_of(window_face[f], read[w]);
+              for (std::uint32_t j : read[w])
+                stale = stale || moved_at[j] > solved_at[c];
+            }
+            if (!stale)
+              return;
+            solved_at[c] = clock;
+            Worker& k = worker[w];
+            k.change = (std::max)(k.change, solve(w, window_vertex.data() + vertex_begin[c],
+                                                  vertex_begin[c + 1] - vertex_begin[c],
+                                                  window_face.data() + face_begin[c],
+                                                  face_begin[c + 1] - face_begin[c], moved));
+            ++k.solves;
+          },
+          1);
+    }
+    double change = 0;
+    statistics.window_solves = 0;
+    for (const Worker& k : worker) {
+      change = (std::max)(change, k.change);
+      statistics.window_solves += k.solves;
     }
     statistics.sweeps = sweep + 1;
     statistics.last_change = change;
