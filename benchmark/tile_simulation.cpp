@@ -24,6 +24,7 @@
 #include <CGAL/Triangular_spline/Domain/delaunay_domain.h>
 #include <CGAL/Triangular_spline/Xu/make_c1_quintic_spline.h>
 #include <CGAL/Triangular_spline/certify.h>
+#include <CGAL/Triangular_spline/internal/vertex_rings.h>
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -218,18 +219,7 @@ std::vector<char> unchecked_faces(const Tile_domain& t, const Tile& tile, const 
           ring[v] = 0;
           front.push_back(v);
         }
-  for (int r = 1; r <= rings; ++r) {
-    std::vector<std::uint32_t> next;
-    for (std::uint32_t u : front) {
-      const auto [nb, ne] = d.neighbours(u);
-      for (auto w = nb; w != ne; ++w)
-        if (ring[*w] < 0) {
-          ring[*w] = r;
-          next.push_back(*w);
-        }
-    }
-    front.swap(next);
-  }
+  TS::internal::grow_vertex_rings(d, ring, std::move(front), rings);
   std::vector<char> unchecked(d.number_of_faces(), 0);
   for (std::uint32_t f = 0; f < d.number_of_faces(); ++f)
     for (std::uint32_t v : d.face(f))

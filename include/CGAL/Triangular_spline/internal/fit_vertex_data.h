@@ -15,6 +15,7 @@
 #include <CGAL/Triangular_spline/exceptions.h>
 #include <CGAL/Triangular_spline/internal/free_value_solves.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
+#include <CGAL/Triangular_spline/internal/vertex_rings.h>
 #include <CGAL/Triangular_spline/internal/schwarz_solver.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
@@ -238,18 +239,8 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
         ring[v] = 0;
         front.push_back(v);
       }
-    for (int r = 1; r <= internal::adaptive_energy_margin_rings; ++r) {
-      std::vector<std::uint32_t> next;
-      for (std::uint32_t u : front) {
-        const auto [nb, ne] = domain.neighbours(u);
-        for (auto w = nb; w != ne; ++w)
-          if (ring[*w] < 0) {
-            ring[*w] = r;
-            next.push_back(*w);
-          }
-      }
-      front.swap(next);
-    }
+    internal::grow_vertex_rings(domain, ring, std::move(front),
+                                internal::adaptive_energy_margin_rings);
     // The slots the energy solve keeps fixed take their local values first, on all cores
     // (each slot's value depends on the slot alone).
     auto outside_solve = [&](Slot s) {
