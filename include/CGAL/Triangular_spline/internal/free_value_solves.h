@@ -515,7 +515,8 @@ Schwarz_statistics least_squares_free_values(C1_quintic_spline<GeomTraits, Value
       misfits.emplace_back(std::uint32_t(s), target(static_cast<Slot>(s)));
   return minimise_slot_quadratic(
       spline, a, std::vector<double>(spline.domain().number_of_faces(), 0), {}, std::move(misfits),
-      1.0, target, options, data_scale(values), "least-squares");
+      1.0, target, schwarz_margin_rings(options, least_squares_margin_rings), data_scale(values),
+      "least-squares");
 }
 
 // Minimal thin-plate energy (Fit::MINIMAL_ENERGY): corners fixed to the data, the free slots
@@ -566,8 +567,10 @@ Schwarz_statistics minimal_energy_free_values(C1_quintic_spline<GeomTraits, Valu
     for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
       if (a.has_row(v))
         misfits.emplace_back(v, values[v]);
-  return minimise_slot_quadratic(spline, a, energy_weight, tension_weight, std::move(misfits), 1.0,
-                                 initial, options, data_scale(values), "minimal-energy");
+  return minimise_slot_quadratic(
+      spline, a, energy_weight, tension_weight, std::move(misfits), 1.0, initial,
+      schwarz_margin_rings(options, interpolating ? energy_margin_rings : smoothing_margin_rings),
+      data_scale(values), "minimal-energy");
 }
 
 } // namespace internal

@@ -5,7 +5,6 @@
 #define CGAL_TRIANGULAR_SPLINE_INTERNAL_SCHWARZ_SOLVER_H
 
 #include <CGAL/Triangular_spline/exceptions.h>
-#include <CGAL/Triangular_spline/internal/parallel.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -13,8 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <utility>
@@ -33,33 +35,59 @@ namespace internal {
 // current value. Each window solve can only lower the objective, and the sweeps converge
 // to the global minimiser.
 //
-// Each sweep visits the windows by colours: two windows have different colours when one
-// solves for an unknown that the other's faces read, so the windows of one colour are
-// independent and are solved at the same time on all cores, in any order, with the same
-// result (greedy colouring in cell order: 17 colours for the 196 windows of 10^5 random
-// points). Each window is factorized again (no factorization is kept: memory is one
-// window's per core). Windows that couple beyond their neighbours are common: a vertex with
-// a fan of slivers (a corner of the data's square, a hull vertex) couples windows along a
-// whole side. Sweeps pipelined so as to
-// reuse each window's factorization (pass p of a window as soon as its neighbouring
-// cells had pass p - 1) see such couplings about a column of cells per pass late: at
-// 10^5 noisy points the control values stayed 6.8e-5 from the direct solve after 4 to 6
-// passes (sequential sweeps: 1.8e-3, 5.4e-8, 6.7e-10 after one, two and three).
+// Windows are coloured: two windows have different colours when one solves for an unknown
+// that the other's faces read (greedy colouring in cell order). A sweep solves each window
+// after the windows of lower colours it conflicts with and before those of higher colours,
+// as soon as those before it are done, on all cores: windows that conflict with none
+// running run together, in any order, with the same result. Each window is factorized
+// again (no factorization is kept: memory is one window's per core). Windows that couple
+// beyond their neighbours are common: a vertex with a fan of slivers (a corner of the
+// data's square, a hull vertex) couples windows along a whole side (the 196 windows of
+// 10^5 random points of the unit square with its corners take 50 colours, 44 of them a
+// window each: those along the sides). Margins cut off at a distance from their cell, so
+// that such fans do not carry them along a side, left strongly coupled unknowns in
+// different windows: 0.76 from the direct solve after 4 sweeps at 700 points. Sweeps
+// pipelined so as to reuse each window's factorization (pass p of a window as soon as its
+// neighbouring cells had pass p - 1) see such couplings about a column of cells per pass
+// late: at 10^5 noisy points the control values stayed 6.8e-5 from the direct solve after
+// 4 to 6 passes (sequential sweeps: 1.8e-3, 5.4e-8, 6.7e-10 after one, two and three).
 //
 // `sweeps` > 0: exactly that many. 0: until a sweep changes no unknown by more than
 // `tolerance` times the data range (the `scale` of schwarz_minimise()), at most
 // `max_sweeps`. A sweep after the first solves only the windows whose unknowns or
 // surrounding unknowns moved by more than that since their last solve: the others would
 // reproduce their values.
+//
+// `margin_rings` < 0 leaves the margin to the fit (schwarz_margin_rings()): a wider margin
+// needs fewer sweeps but costs more per window. Measured at 10^5 random points, smooth /
+// noisy data (fit stage, CPU s): least squares with 3, 2, 1 rings 8.8 / 13.1, 7.5 / 10.9,
+// 6.7 / 11.3 (no margin: 8 sweeps, not converged on the noisy data); energy 24.7 / 39.2,
+// 23.2 / 36.0, 21.9 / 47.6. The least-squares normal matrix is the identity plus the
+// dependent slots' rows: its couplings are short, and one ring suffices. Smoothing keeps
+// three.
 struct Schwarz_options {
   std::size_t direct_limit = 40000;
   std::size_t window_vertices = 500;
-  int margin_rings = 3;
+  int margin_rings = -1;
   int sweeps = 0;
   double tolerance = 1e-8;
   int max_sweeps = 8;
   std::size_t threads = 0; // 0: one per core (the result does not depend on it)
 };
+
+// The margin of the fits' windows when Schwarz_options::margin_rings < 0.
+constexpr int least_squares_margin_rings = 1;
+constexpr int energy_margin_rings = 2;
+// Smoothing converges more slowly with fewer rings (500 noisy points, 4 sweeps: 1.8e-4 from
+// the direct solve with two, below 1e-7 with three).
+constexpr int smoothing_margin_rings = 3;
+
+// `options` with its margin set to `fit_margin` unless the caller chose one.
+inline Schwarz_options schwarz_margin_rings(Schwarz_options options, int fit_margin) {
+  if (options.margin_rings < 0)
+    options.margin_rings = fit_margin;
+  return options;
+}
 
 // The number of window solves that run at once (and of face_terms' scratch spaces).
 inline std::size_t schwarz_workers(const Schwarz_options& options) {
@@ -96,13 +124,14 @@ struct Face_terms {
 //     unknowns beyond it at their values in x.
 // `vertices`: the number of domain vertices, `neighbours(v, out)` their adjacency and
 // `position(v)` their coordinates (std::array<double, 2>), for the windows; `scale` the
-// unit of options.tolerance.
+// unit of options.tolerance. A negative options.margin_rings means energy_margin_rings.
 template <class Unknowns_of, class Compute_face_terms, class Neighbours, class Position>
 Schwarz_statistics
 schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, std::size_t faces,
                  const Unknowns_of& unknowns_of, const Compute_face_terms& face_terms,
                  const Neighbours& neighbours, const Position& position, Eigen::MatrixXd& x,
-                 const Schwarz_options& options, double scale, const char* what) {
+                 const Schwarz_options& chosen, double scale, const char* what) {
+  const Schwarz_options options = schwarz_margin_rings(chosen, energy_margin_rings);
   const std::size_t n = owner.size();
   Schwarz_statistics statistics;
   statistics.scale = scale;
@@ -335,6 +364,7 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
   // faces read (that window writes what b reads), and conversely.
   std::vector<std::uint32_t> colour(windows, 0);
   std::size_t colours = 0;
+  std::vector<std::vector<std::uint32_t>> conflicts(windows);
   {
     std::vector<std::size_t> containing_start(vertices + 1, 0);
     for (std::uint32_t v : window_vertex)
@@ -349,7 +379,6 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
           containing[next[window_vertex[i]]++] = std::uint32_t(c);
     }
     // (each pair listed at most twice)
-    std::vector<std::vector<std::uint32_t>> conflicts(windows);
     std::vector<std::size_t> seen(vertices, windows), met(windows, windows);
     for (std::size_t c = 0; c < windows; ++c) {
       auto reach = [&](std::uint32_t v) {
@@ -388,13 +417,45 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
     }
   }
   statistics.colours = colours;
-  std::vector<std::vector<std::uint32_t>> by_colour(colours);
-  for (std::size_t c = 0; c < windows; ++c)
-    by_colour[colour[c]].push_back(std::uint32_t(c));
+  // A sweep solves every window after the windows of lower colours it conflicts with, and
+  // before those of higher colours: the order of a colour by colour sweep, and so its
+  // result, bit for bit, whichever windows run at the same time. A window starts as soon
+  // as those before it are done, the one with the costliest chain of windows after it
+  // first (a barrier after each colour left a core idle through the colours of a single
+  // window).
+  std::vector<std::vector<std::uint32_t>> later(windows);
+  std::vector<std::size_t> earlier(windows, 0);
+  for (std::size_t c = 0; c < windows; ++c) {
+    auto& list = conflicts[c];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    for (std::uint32_t b : list)
+      if (colour[b] > colour[c])
+        later[c].push_back(b);
+      else
+        ++earlier[c];
+    std::vector<std::uint32_t>().swap(list);
+  }
+  conflicts = {};
+  std::vector<double> chain(windows, 0);
+  {
+    std::vector<std::uint32_t> order(windows);
+    for (std::size_t c = 0; c < windows; ++c)
+      order[c] = std::uint32_t(c);
+    std::sort(order.begin(), order.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return colour[a] > colour[b]; });
+    for (std::uint32_t c : order) {
+      double longest = 0;
+      for (std::uint32_t b : later[c])
+        longest = (std::max)(longest, chain[b]);
+      chain[c] = double(face_begin[c + 1] - face_begin[c]) + longest;
+    }
+  }
   // The tolerance: a window is solved again when, since its last solve, an unknown it
   // solves for or reads moved by more than `threshold` (moved_at[j]: the colour phase in
-  // which x_j last left the ball of that radius around anchor[j], its value then). Windows
-  // of one phase read nothing the others write.
+  // which x_j last left the ball of that radius around anchor[j], its value then; the phase
+  // of window c in sweep s is s colours + colour[c] + 1). Windows that run at the same time
+  // read nothing the others write.
   const double threshold = options.tolerance * scale;
   const bool fixed_sweeps = options.sweeps > 0;
   const int most = fixed_sweeps ? options.sweeps : (std::max)(1, options.max_sweeps);
@@ -402,54 +463,100 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
   Eigen::MatrixXd anchor;
   if (!fixed_sweeps)
     anchor = x;
-  std::uint64_t clock = 0;
-  auto moved = [&](std::size_t j) {
-    if (fixed_sweeps)
-      return;
-    const auto i = Eigen::Index(j);
-    if ((x.row(i) - anchor.row(i)).cwiseAbs().maxCoeff() > threshold) {
-      anchor.row(i) = x.row(i);
-      moved_at[j] = clock;
-    }
-  };
   statistics.method = Schwarz_statistics::WINDOWS;
   std::vector<std::vector<std::uint32_t>> read(workers);
+  const std::size_t threads = (std::min)(workers, windows);
   for (int sweep = 0; sweep < most; ++sweep) {
     for (Worker& k : worker)
       k.change = 0;
-    for (const auto& same : by_colour) {
-      ++clock;
-      // Window i of this colour runs on worker i % threads (parallel_for_index() with
-      // blocks of 1 interleaves the indices over the threads).
-      const std::size_t threads = (std::min)(workers, same.size());
-      parallel_for_index(
-          same.size(), threads,
-          [&](std::size_t i) {
-            const std::size_t w = i % threads, c = same[i];
-            bool stale = sweep == 0 || fixed_sweeps;
-            for (std::size_t v = vertex_begin[c]; v < vertex_begin[c + 1] && !stale; ++v) {
-              const std::uint32_t u = window_vertex[v];
-              for (std::size_t o = unknown_start[u]; o < unknown_start[u + 1]; ++o)
-                stale = stale || moved_at[owned[o]] > solved_at[c];
-            }
-            for (std::size_t f = face_begin[c]; f < face_begin[c + 1] && !stale; ++f) {
-              read[w].clear();
-              unknowns_of(window_face[f], read[w]);
-              for (std::uint32_t j : read[w])
-                stale = stale || moved_at[j] > solved_at[c];
-            }
-            if (!stale)
-              return;
-            solved_at[c] = clock;
-            Worker& k = worker[w];
-            k.change = (std::max)(k.change, solve(w, window_vertex.data() + vertex_begin[c],
-                                                  vertex_begin[c + 1] - vertex_begin[c],
-                                                  window_face.data() + face_begin[c],
-                                                  face_begin[c + 1] - face_begin[c], moved));
-            ++k.solves;
-          },
-          1);
+    auto run = [&](std::size_t w, std::size_t c) {
+      const std::uint64_t phase = std::uint64_t(sweep) * colours + colour[c] + 1;
+      bool stale = sweep == 0 || fixed_sweeps;
+      for (std::size_t v = vertex_begin[c]; v < vertex_begin[c + 1] && !stale; ++v) {
+        const std::uint32_t u = window_vertex[v];
+        for (std::size_t o = unknown_start[u]; o < unknown_start[u + 1]; ++o)
+          stale = stale || moved_at[owned[o]] > solved_at[c];
+      }
+      for (std::size_t f = face_begin[c]; f < face_begin[c + 1] && !stale; ++f) {
+        read[w].clear();
+        unknowns_of(window_face[f], read[w]);
+        for (std::uint32_t j : read[w])
+          stale = stale || moved_at[j] > solved_at[c];
+      }
+      if (!stale)
+        return;
+      solved_at[c] = phase;
+      auto moved = [&](std::size_t j) {
+        if (fixed_sweeps)
+          return;
+        const auto i = Eigen::Index(j);
+        if ((x.row(i) - anchor.row(i)).cwiseAbs().maxCoeff() > threshold) {
+          anchor.row(i) = x.row(i);
+          moved_at[j] = phase;
+        }
+      };
+      Worker& k = worker[w];
+      k.change = (std::max)(k.change, solve(w, window_vertex.data() + vertex_begin[c],
+                                            vertex_begin[c + 1] - vertex_begin[c],
+                                            window_face.data() + face_begin[c],
+                                            face_begin[c + 1] - face_begin[c], moved));
+      ++k.solves;
+    };
+    // the ready windows, costliest chain first (ties: lower index)
+    auto first = [&](std::uint32_t a, std::uint32_t b) {
+      return chain[a] < chain[b] || (chain[a] == chain[b] && a > b);
+    };
+    std::vector<std::uint32_t> ready;
+    std::vector<std::size_t> waiting(earlier);
+    for (std::size_t c = 0; c < windows; ++c)
+      if (waiting[c] == 0)
+        ready.push_back(std::uint32_t(c));
+    std::make_heap(ready.begin(), ready.end(), first);
+    std::size_t done = 0;
+    bool failed = false;
+    std::exception_ptr error;
+    std::mutex lock;
+    std::condition_variable wake;
+    auto work = [&](std::size_t w) {
+      std::unique_lock<std::mutex> guard(lock);
+      for (;;) {
+        wake.wait(guard, [&] { return failed || done == windows || !ready.empty(); });
+        if (failed || done == windows)
+          return;
+        std::pop_heap(ready.begin(), ready.end(), first);
+        const std::uint32_t c = ready.back();
+        ready.pop_back();
+        guard.unlock();
+        try {
+          run(w, c);
+        } catch (...) {
+          guard.lock();
+          if (!failed)
+            error = std::current_exception();
+          failed = true;
+          wake.notify_all();
+          return;
+        }
+        guard.lock();
+        ++done;
+        for (std::uint32_t b : later[c])
+          if (--waiting[b] == 0) {
+            ready.push_back(b);
+            std::push_heap(ready.begin(), ready.end(), first);
+          }
+        wake.notify_all();
+      }
+    };
+    {
+      std::vector<std::thread> helpers;
+      for (std::size_t w = 1; w < threads; ++w)
+        helpers.emplace_back(work, w);
+      work(0);
+      for (std::thread& helper : helpers)
+        helper.join();
     }
+    if (error)
+      std::rethrow_exception(error);
     double change = 0;
     statistics.window_solves = 0;
     for (const Worker& k : worker) {
