@@ -434,7 +434,6 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
         later[c].push_back(b);
       else
         ++earlier[c];
-    std::vector<std::uint32_t>().swap(list);
   }
   conflicts = {};
   std::vector<double> chain(windows, 0);
