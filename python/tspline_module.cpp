@@ -653,6 +653,7 @@ std::shared_ptr<Spline> make_c1(const Points& points, const Points& values,
     solver["sweeps"] = statistics.solver_sweeps;
     solver["windows_per_sweep"] = statistics.solver_windows;
     solver["window_solves"] = statistics.solver_window_solves;
+    solver["iterations"] = statistics.solver_iterations;
     solver["last_change"] = statistics.solver_last_change;
     solver["converged"] = statistics.solver_converged;
     info["solver"] = solver;

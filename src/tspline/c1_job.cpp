@@ -463,6 +463,7 @@ Json run(const C1_job& job, std::ostream& out) {
     solver["sweeps"] = fit_statistics.solver_sweeps;
     solver["windows_per_sweep"] = fit_statistics.solver_windows;
     solver["window_solves"] = fit_statistics.solver_window_solves;
+    solver["iterations"] = fit_statistics.solver_iterations;
     solver["last_change"] = fit_statistics.solver_last_change;
     solver["converged"] = fit_statistics.solver_converged;
     report["solver"] = solver;

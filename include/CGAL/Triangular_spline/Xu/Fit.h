@@ -37,17 +37,14 @@ enum class Fit {
   /// weights, and the least-squares choice keeps the propagated points near the data
   /// instead of letting them overshoot. The targets are those of `LOCAL_POLYNOMIAL`. The
   /// minimiser is global: one sparse Cholesky factorization (Eigen) up to 40000 unknowns
-  /// (about 3600 vertices), beyond sweeps of overlapping windows (cells of about 500
-  /// vertices and one ring of margin, each minimised exactly with the others at their
-  /// current values, starting from the targets) until a sweep moves no control value by
-  /// more than 1e-8 of the data range: linear time, memory bounded by a window, and the
-  /// global minimiser to rounding (one sweep of windows with three rings was 1.3e-12 from the
-  /// direct solve on 20000 noisy random points; one ring to the tolerance is 6.3e-12 from
-  /// three rings at \f$10^5\f$ random points, in two sweeps). The solve runs in `double`;
-  /// the free values are then converted to `FT` and propagated in `FT`, so an exact spline
-  /// is still exactly C^1
-  /// (linear data is then reproduced up to the solve's rounding). Needs
-  /// `Corner_frame::CORNER_AND_TWO_STARS`
+  /// (about 3600 vertices), beyond conjugate gradients on the normal equations
+  /// \f$N x = b\f$ (preconditioned by the inverses of \f$N\f$'s blocks of the unknowns of
+  /// one vertex, starting from the targets) until the residual \f$|b - N x|_2\f$ is within
+  /// 1e-8 of the data range; since \f$N \succeq I\f$ that bounds every free value's distance
+  /// from the minimiser. Linear time (10 to 40 iterations at \f$10^5\f$ random points) and
+  /// memory. The solve runs in `double`; the free values are then converted to `FT` and
+  /// propagated in `FT`, so an exact spline is still exactly C^1 (linear data is then
+  /// reproduced up to the solve's rounding). Needs `Corner_frame::CORNER_AND_TWO_STARS`
   LEAST_SQUARES,
   /// interpolation of the values; every free point takes the polar value of the local
   /// polynomial (`Local_polynomials`, degree 3 by default) of its nearest corner, averaged
@@ -75,9 +72,10 @@ enum class Fit {
   /// unknowns (about 3600 vertices); beyond, sweeps of overlapping windows (block
   /// Gauss-Seidel: cells of about 500 vertices with two rings of margin, three with
   /// smoothing, each window's energy minimised exactly with the other unknowns at their
-  /// current values, the first sweep starting from the `LOCAL_POLYNOMIAL` values). Every window solve lowers the
-  /// energy and the sweeps converge to the global minimiser; they stop when one moves no
-  /// control value by more than 1e-8 of the data range (with three rings, two sweeps were
+  /// current values, the first sweep starting from the `LOCAL_POLYNOMIAL` values). Every
+  /// window solve lowers the energy and the sweeps converge to the global minimiser; they
+  /// stop when one moves no control value by more than 1e-8 of the data range (with three
+  /// rings, two sweeps were
   /// 1.2e-8 from the direct solve on 20000 noisy random points, 3e-5 with smoothing 0.1;
   /// two rings to the tolerance are 4.2e-10 from three at \f$10^5\f$ random points).
   /// Linear time (about 0.13 ms per vertex and sweep), memory bounded by a window. Needs
@@ -126,15 +124,18 @@ struct Fit_statistics {
   bool energy_skipped = false;
   /// The global solve of the `MINIMAL_ENERGY` and `LEAST_SQUARES` fits, smoothing, and the
   /// `ADAPTIVE` fit's energy solve: how it was solved (`"direct"`: one sparse Cholesky
-  /// factorization, `"windows"`: sweeps of overlapping windows; empty when nothing was
-  /// solved), the sweeps (1 for the direct solve, 0 when there was no solve), the windows per
-  /// sweep, the window solves over all sweeps, the largest change of a control value in the
-  /// last sweep, and whether that change met the solver's tolerance (else the sweeps stopped
-  /// at their limit)
+  /// factorization, `"windows"`: sweeps of overlapping windows, `"conjugate_gradients"`:
+  /// the large least-squares fits; empty when nothing was solved), the sweeps (1 for the
+  /// direct solve and conjugate gradients, 0 when there was no solve), the windows per sweep,
+  /// the window solves over all sweeps, the conjugate gradients' iterations, the largest
+  /// change of a control value in the last sweep (conjugate gradients: the norm of the
+  /// residual, a bound on the error of every control value), and whether that met the
+  /// solver's tolerance (else the sweeps or iterations stopped at their limit)
   std::string solver_method;
   int solver_sweeps = 0;
   std::size_t solver_windows = 0;
   std::size_t solver_window_solves = 0;
+  int solver_iterations = 0;
   double solver_last_change = 0;
   bool solver_converged = true;
 };

@@ -319,11 +319,12 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
         [&](std::size_t i) { spline.set_free_value(free_slots[i], target(free_slots[i])); }, block);
   }
   spline.propagate();
-  static const char* const methods[] = {"", "direct", "windows"};
+  static const char* const methods[] = {"", "direct", "windows", "conjugate_gradients"};
   statistics.solver_method = methods[solved.method];
   statistics.solver_sweeps = solved.sweeps;
   statistics.solver_windows = solved.windows;
   statistics.solver_window_solves = solved.window_solves;
+  statistics.solver_iterations = solved.iterations;
   statistics.solver_last_change = solved.last_change;
   statistics.solver_converged = solved.converged;
   if (solver)

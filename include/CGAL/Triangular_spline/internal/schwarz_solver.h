@@ -60,11 +60,13 @@ namespace internal {
 //
 // `margin_rings` < 0 leaves the margin to the fit (schwarz_margin_rings()): a wider margin
 // needs fewer sweeps but costs more per window. Measured at 10^5 random points, smooth /
-// noisy data (fit stage, CPU s): least squares with 3, 2, 1 rings 8.8 / 13.1, 7.5 / 10.9,
-// 6.7 / 11.3 (no margin: 8 sweeps, not converged on the noisy data); energy 24.7 / 39.2,
-// 23.2 / 36.0, 21.9 / 47.6. The least-squares normal matrix is the identity plus the
-// dependent slots' rows: its couplings are short, and one ring suffices. Smoothing keeps
-// three.
+// noisy data (fit stage, CPU s): energy with 3, 2, 1 rings 24.7 / 39.2, 23.2 / 36.0,
+// 21.9 / 47.6. Smoothing keeps three.
+//
+// The least-squares fit uses no windows beyond `direct_limit`: conjugate gradients
+// (least_squares_conjugate_gradients()), until the residual, a bound on the error, is
+// within `tolerance` times the data range, at most `max_iterations` iterations. (Its
+// windows, with one ring, took 6.7 / 11.3 CPU s at 10^5 points.)
 struct Schwarz_options {
   std::size_t direct_limit = 40000;
   std::size_t window_vertices = 500;
@@ -72,11 +74,11 @@ struct Schwarz_options {
   int sweeps = 0;
   double tolerance = 1e-8;
   int max_sweeps = 8;
+  int max_iterations = 1000;
   std::size_t threads = 0; // 0: one per core (the result does not depend on it)
 };
 
 // The margin of the fits' windows when Schwarz_options::margin_rings < 0.
-constexpr int least_squares_margin_rings = 1;
 constexpr int energy_margin_rings = 2;
 // Smoothing converges more slowly with fewer rings (500 noisy points, 4 sweeps: 1.8e-4 from
 // the direct solve with two, below 1e-7 with three).
@@ -97,13 +99,15 @@ inline std::size_t schwarz_workers(const Schwarz_options& options) {
 
 // What the solver did (Fit_statistics, tests and benchmarks).
 struct Schwarz_statistics {
-  enum Method { NONE, DIRECT, WINDOWS };
+  enum Method { NONE, DIRECT, WINDOWS, CONJUGATE_GRADIENTS };
   Method method = NONE;
   std::size_t windows = 0;       // windows per sweep; 0 for the direct solve
   std::size_t colours = 0;       // colours of the windows (0 for the direct solve)
-  int sweeps = 0;                // sweeps done (1 for the direct solve)
+  int sweeps = 0;                // sweeps done (1 for the direct solve and conjugate gradients)
+  int iterations = 0;            // conjugate gradients' iterations (the most of a coordinate)
   std::size_t window_solves = 0; // windows factorized and solved, over all sweeps
-  double last_change = 0;        // largest change of an unknown in the last sweep
+  double last_change = 0;        // largest change of an unknown in the last sweep (conjugate
+                                 // gradients: the residual's norm, which bounds the error)
   double scale = 0;              // the unit of `tolerance` (the data range)
   bool converged = true;         // false: stopped by max_sweeps
 };
