@@ -203,6 +203,22 @@ double thin_triangle_weight(const Point_2& p, const Point_2& q, const Point_2& r
   return quality >= 0.1 ? 1.0 : std::pow(quality / 0.1, 3);
 }
 
+// The vertex owning free slot s's unknown in the global solves (it decides the windows and
+// the preconditioner's blocks): the vertex of largest multiplicity of s's label, the
+// smallest index on ties.
+template <class GeomTraits, class Value>
+std::uint32_t owning_vertex(const C1_quintic_spline<GeomTraits, Value>& spline,
+                            typename C1_quintic_spline<GeomTraits, Value>::Slot s) {
+  int largest = -1;
+  std::uint32_t owner = 0;
+  for (const auto& [v, m] : spline.polar_label(s))
+    if (m > largest || (m == largest && std::uint32_t(v) < owner)) {
+      largest = m;
+      owner = std::uint32_t(v);
+    }
+  return owner;
+}
+
 // The tension term of the Adaptive fit's energy, int_T |grad f - grad g|^2 for a quintic f
 // over T and a linear g, in factored form as thin_plate_energy_factors(): f_x and f_y have
 // the quartic coefficients 5 L_x b and 5 L_y b, M is the quartic Gram matrix times 25 (so
@@ -298,8 +314,7 @@ Schwarz_statistics minimise_slot_quadratic(
   // bytes per slot) goes before the solve.
   std::vector<std::pair<std::uint32_t, Value>>().swap(misfits);
   owning_face = {};
-  // the owner of an unknown: the vertex of largest multiplicity of its slot's label
-  // (smallest index on ties)
+  // the owners of the unknowns (owning_vertex())
   std::vector<Slot> slot_of(a.unknowns);
   std::vector<std::uint32_t> owner(a.unknowns);
   Eigen::MatrixXd x(Eigen::Index(a.unknowns), D);
@@ -308,12 +323,7 @@ Schwarz_statistics minimise_slot_quadratic(
       continue;
     const auto j = std::size_t(a.column(s));
     slot_of[j] = s;
-    int largest = -1;
-    for (const auto& [v, m] : spline.polar_label(s))
-      if (m > largest || (m == largest && v < owner[j])) {
-        largest = m;
-        owner[j] = std::uint32_t(v);
-      }
+    owner[j] = owning_vertex(spline, s);
     const Value start = initial(s);
     for (int d = 0; d < D; ++d)
       x(Eigen::Index(j), d) = CGAL::to_double(Traits::coordinate(start, d));
@@ -524,8 +534,8 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
   statistics.sweeps = 1;
   if (n == 0)
     return statistics;
-  // Unknowns renumbered by owner (the vertex of largest multiplicity of the slot's label,
-  // as the windows own them): a vertex's block is a range, and rows read nearby memory.
+  // Unknowns renumbered by owner (owning_vertex(), as the windows own them): a vertex's
+  // block is a range, and rows read nearby memory.
   std::vector<Slot> slot_of(n);
   std::vector<std::uint32_t> owner(n);
   for (Slot s : spline.free_slots()) {
@@ -534,12 +544,7 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
       continue;
     CGAL_assertion(std::size_t(s) < spline.number_of_slots()); // its row is in R: N >= I
     slot_of[std::size_t(j)] = s;
-    int largest = -1;
-    for (const auto& [v, m] : spline.polar_label(s))
-      if (m > largest || (m == largest && std::uint32_t(v) < owner[std::size_t(j)])) {
-        largest = m;
-        owner[std::size_t(j)] = std::uint32_t(v);
-      }
+    owner[std::size_t(j)] = owning_vertex(spline, s);
   }
   std::vector<std::size_t> start(V + 1, 0);
   for (std::uint32_t v : owner)
