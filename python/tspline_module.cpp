@@ -639,6 +639,7 @@ std::shared_ptr<Spline> make_c1(const Points& points, const Points& values,
   py::dict info;
   info["flat_hull_faces_removed"] = flat_hull_faces;
   info["vertices_by_degree"] = statistics.vertices_by_degree;
+  info["vertices_beyond_reach"] = statistics.vertices_beyond_reach;
   if (fit == TS::Fit::ADAPTIVE) {
     info["vertices_trusted"] = statistics.vertices_by_trust[0];
     info["vertices_blended"] = statistics.vertices_by_trust[1];

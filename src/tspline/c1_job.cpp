@@ -447,6 +447,9 @@ Json run(const C1_job& job, std::ostream& out) {
     for (std::size_t count : fit_statistics.vertices_by_degree)
       by_degree.push_back(count);
     local["vertices_by_degree"] = by_degree;
+    // Polynomials read far beyond their data (long hull edges): their targets move to the
+    // linear interpolant there.
+    local["vertices_beyond_reach"] = fit_statistics.vertices_beyond_reach;
     if (fit == TS::Fit::ADAPTIVE) {
       // How much of the surface follows the local polynomials and how much the energy.
       const auto& trust = fit_statistics.vertices_by_trust;

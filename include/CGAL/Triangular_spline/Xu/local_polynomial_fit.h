@@ -150,6 +150,7 @@ public:
     const std::size_t V = domain.number_of_vertices();
     m_degree.assign(V, 0);
     m_resolution.assign(V, 1.0);
+    m_radius.assign(V, 0.0f);
     m_scale.assign(V, FT(1));
     m_coefficients.assign(V * coefficients_per_vertex, Value_traits<Value>::zero());
     if constexpr (fraction_free) {
@@ -195,6 +196,14 @@ public:
     \returns the resolution ratio, in [0, 1]
   */
   double resolution(Index v) const { return m_resolution[v]; }
+  /*!
+    returns the radius of \f$p_v\f$'s fit: the largest distance from \f$v\f$ of the data
+    points it was fitted to (0 for a constant). Far beyond it \f$p_v\f$ extrapolates: its
+    terms of degree \f$k\f$ grow as the \f$k\f$-th power of the distance in radii.
+    \param v the index of a vertex
+    \returns the radius of the fit at `v`
+  */
+  double radius(Index v) const { return double(m_radius[v]); }
   /// returns the largest degree asked for.
   /// \returns the largest degree asked for
   int max_degree() const { return m_max_degree; }
@@ -601,8 +610,9 @@ private:
     bool on_ring = false; // the first ring's points, else the nearest candidates
     std::size_t n = 0;
     double scale = 0, weight_sum = 0;
-    int columns = 0; // columns factorized (a column nearly in the span of the previous ones
-                     // stops the factorization)
+    double radius = 0; // the largest distance of the points from v
+    int columns = 0;   // columns factorized (a column nearly in the span of the previous ones
+                       // stops the factorization)
     std::array<double, max_columns> ratio;           // |R_kk| / |a_k|: how independent column k is
     std::array<double, max_columns * max_columns> R; // upper triangle, R[j * 20 + i], i <= j
     std::array<double, max_columns * std::size_t(D)> c; // Q^T b, per coordinate
@@ -629,6 +639,7 @@ private:
     const int u = unknowns(d);
     g.n = n;
     g.scale = std::exp2(std::ceil(std::log2(radius)));
+    g.radius = radius;
     g.weight_sum = 0;
     grow(work.design, n * std::size_t(u));
     grow(work.rhs, n * std::size_t(D));
@@ -1008,6 +1019,7 @@ private:
       const Group& g = groups[candidate.group];
       const int degree = candidate.degree;
       m_scale[v] = FT(1) / FT(g.scale);
+      m_radius[v] = float(g.radius);
       if constexpr (exact) {
         if (!solve_exact(v, values, g.on_ring ? work.ring : work.points, g.n, degree, m_scale[v]))
           continue;
@@ -1242,7 +1254,8 @@ private:
   double m_tie_ratio = 1.1;
   std::vector<int> m_degree;
   std::vector<double> m_resolution;
-  std::vector<FT> m_scale; // 1 / S_v
+  std::vector<float> m_radius; // 4 bytes: a threshold's scale, not a coordinate
+  std::vector<FT> m_scale;     // 1 / S_v
   std::vector<Value> m_coefficients;
   // exact fraction types: the coefficients' numerators (D per coefficient) over one
   // denominator per vertex and coordinate (0: not fitted fraction-free)
