@@ -92,10 +92,11 @@ enum class Fit {
   /// dense smooth data and on sparse or rough data alike. Each vertex's resolution
   /// \f$\rho_v\f$ (`Local_polynomials::resolution()`, the leave-one-out residual of its
   /// polynomial relative to a plane's) gives a trust \f$\tau_v\f$: 1 for \f$\rho_v \le 0.1\f$,
-  /// 0 for \f$\rho_v \ge 0.5\f$, linear between, and at most 1 minus the pull of its
-  /// targets along its edges (see `LOCAL_POLYNOMIAL`: 0 within four fit radii, 1 beyond
-  /// eight where the polynomial misses the data), so that the slivers under long hull edges
-  /// are decided by the energy solve, not by polynomials read far from their data
+  /// 0 for \f$\rho_v \ge 0.5\f$, linear between; where some vertex is below 1 (an energy
+  /// solve runs), at most 1 minus the pull of its targets along its edges (see
+  /// `LOCAL_POLYNOMIAL`: 0 within four fit radii, 1 beyond eight where the polynomial misses
+  /// the data), so that the slivers under long hull edges are decided by the energy solve,
+  /// not by polynomials read far from their data
   /// (`benchmark/hull_strip.py`, \f$10^5\f$ random points of a terrain-like function:
   /// largest error within \f$10^{-3}\f$ of the sides 4.90 before, 0.80 now, scipy CT
   /// 1.05). Free points whose nearest vertices are all
