@@ -135,8 +135,8 @@ struct Fit_statistics {
   /// edge more than four times as long as their local polynomial's fit radius
   /// (`Local_polynomials::radius()`) at whose far end the polynomial misses the data (see
   /// `Fit::LOCAL_POLYNOMIAL`): the targets it gives there move to the piecewise linear
-  /// interpolant, and the `ADAPTIVE` fit distrusts the vertex as much (the slivers under the
-  /// long hull edges of random points)
+  /// interpolant, and where the `ADAPTIVE` fit runs an energy solve it distrusts the vertex
+  /// as much (the slivers under the long hull edges of random points)
   std::size_t vertices_beyond_reach = 0;
   /// always `false` (kept for compatibility): the `ADAPTIVE` fit's energy solve used to be
   /// skipped beyond \f$10^4\f$ untrusted vertices; it is now linear in their number and
