@@ -2810,13 +2810,17 @@ TEST(MinimalEnergy, AffineRowsArePropagation) {
     std::vector<double> x(a.unknowns);
     for (double& v : x)
       v = uniform(engine);
+    // the constants first: in double they are the spline's values, which the check replaces
+    std::vector<double> constant(spline.number_of_slots());
+    for (std::size_t s = 0; s < constant.size(); ++s)
+      constant[s] = a.constant(s, 0);
     for (auto s : spline.free_slots())
-      spline.set_free_value(s, a.column(s) >= 0 ? x[std::size_t(a.column(s))] : a.constant[s][0]);
+      spline.set_free_value(s, a.column(s) >= 0 ? x[std::size_t(a.column(s))] : constant[s]);
     spline.propagate();
     double largest = 0, worst = 0;
     std::size_t longest = 0, without_row = 0;
     for (std::size_t s = 0; s < spline.number_of_slots(); ++s) {
-      double value = a.constant[s][0];
+      double value = constant[s];
       int previous = -1;
       a.for_each_entry(s, [&](int j, double w) {
         EXPECT_GT(j, previous) << "row " << s << " is not sorted";

@@ -311,8 +311,8 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       // so that the solve decides those slivers (bounded; pulled targets alone are amplified
       // by the slivers' rules: terrain-like data, 2 10^4 points, largest error next to the
       // sides 1.59 against 0.51). Resolved data (a few hull vertices of smooth data) keep the
-      // pulled targets: the solve's set-up is linear in the whole spline, not in the region
-      // (at 10^6 random points it would add 400 MB for a dozen vertices).
+      // pulled targets: the solve's set-up takes time linear in the whole spline (a
+      // propagation, a pass over every rule and every face), not in the region.
       if (unresolved)
         trust[v] = (std::min)(trust[v], 1 - vertex_pull(v));
       ++statistics.vertices_by_trust[trust[v] >= 1 ? 0 : trust[v] > 0 ? 1 : 2];

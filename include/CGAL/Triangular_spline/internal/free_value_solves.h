@@ -34,40 +34,110 @@ namespace Triangular_spline {
 namespace internal {
 
 // Every slot's value as an affine function of the unknowns, by running the rules
-// symbolically: value(s) = sum_i weight[i] x[unknown[i]] + constant[s] over the entries i of
+// symbolically: value(s) = sum_i weight[i] x[unknown[i]] + constant(s) over the entries i of
 // slot s's row. The unknowns are the free slots, without the corners when they interpolate
 // the data (`corners_fixed`) and without the slots for which fixed(s, value) gives a value,
 // which affine_slots() sets in the spline (a list of them took 16 bytes per free slot).
 // The rows lie in two flat arrays (about 2.8 entries per slot on random points; a vector
 // per slot cost 2.6 s and 1 GB at 10^5 points), each sorted by unknown.
+//
+// Inexact number types: the constants are the spline's own values, propagated with every
+// unknown at zero (value(s) at x = 0 is constant(s)), valid until the spline's values
+// change; exact ones keep them in an array of doubles (an exact propagation costs more than
+// the solve). Where few slots have a row (the adaptive fit's local solve) the rows are found
+// through a bitmap and a hash table instead of an index per slot. A constant and an index
+// per slot took 12 bytes per slot, 300 MB at 10^6 points, for a solve that touches 2% of
+// the slots (terrain-like data: 1265 MB, now 999).
 template <class Value>
 struct Affine_slots {
   static constexpr int D = Value_traits<Value>::dimension;
   static constexpr std::uint32_t no_row = std::numeric_limits<std::uint32_t>::max();
   std::size_t unknowns = 0;
-  // Rows only for the slots that depend on an unknown (all of them in the global fits, those
-  // near the untrusted vertices in the adaptive fit): slot s's entries are
-  // row_begin[row[s]] .. + row_size[row[s]]. Dense per-slot row arrays cost 16 bytes per
-  // slot, 400 MB at 10^6 points, for an adaptive fit whose solve touches 2% of them.
-  std::vector<std::uint32_t> row;
+  // Slot s's entries are row_begin[row_of(s)] .. + row_size[row_of(s)].
   std::vector<std::size_t> row_begin;
   std::vector<std::uint32_t> row_size;
   std::vector<int> unknown;
   std::vector<double> weight;
-  std::vector<std::array<double, D>> constant;
 
-  bool has_row(std::size_t s) const { return row[s] != no_row; }
-  std::size_t row_length(std::size_t s) const { return has_row(s) ? row_size[row[s]] : 0; }
+  bool has_row(std::size_t s) const { return row_of(s) != no_row; }
+  // the row of slot s, or no_row
+  std::uint32_t row_of(std::size_t s) const {
+    if (!m_dense.empty())
+      return m_dense[s];
+    if (!((m_reached[s / 64] >> (s % 64)) & 1u))
+      return no_row;
+    for (std::size_t i = hash(s);; i = (i + 1) & (m_table.size() - 1))
+      if (std::uint32_t(m_table[i] >> 32) == std::uint32_t(s))
+        return std::uint32_t(m_table[i]);
+  }
+  std::size_t row_length(std::size_t s) const { return has_row(s) ? row_size[row_of(s)] : 0; }
   // the unknown of free slot s, or -1 if s is fixed (a free unknown's row is itself)
-  int column(std::size_t s) const { return has_row(s) ? unknown[row_begin[row[s]]] : -1; }
+  int column(std::size_t s) const {
+    const std::uint32_t r = row_of(s);
+    return r != no_row ? unknown[row_begin[r]] : -1;
+  }
   // calls f(unknown, weight) for the entries of slot s's row, in increasing unknown order
   template <class F>
   void for_each_entry(std::size_t s, const F& f) const {
-    if (!has_row(s))
+    const std::uint32_t r = row_of(s);
+    if (r == no_row)
       return;
-    for (std::size_t i = row_begin[row[s]], end = i + row_size[row[s]]; i < end; ++i)
+    for (std::size_t i = row_begin[r], end = i + row_size[r]; i < end; ++i)
       f(unknown[i], weight[i]);
   }
+  // coordinate c of slot s's constant
+  double constant(std::size_t s, int c) const {
+    if (m_values)
+      return CGAL::to_double(Value_traits<Value>::coordinate((*m_values)[s], c));
+    return m_constant[s][std::size_t(c)];
+  }
+
+  // (for affine_slots())
+  void reset(std::size_t slots, bool dense_rows, const std::vector<Value>* values) {
+    m_values = values;
+    if (!values)
+      m_constant.assign(slots, std::array<double, D>{});
+    if (dense_rows)
+      m_dense.assign(slots, no_row);
+    else
+      m_reached.assign(slots / 64 + 1, 0);
+  }
+  std::array<double, D>& stored_constant(std::size_t s) { return m_constant[s]; }
+  bool stores_constants() const { return m_values == nullptr; }
+  void set_row(std::size_t s, std::uint32_t r) {
+    if (!m_dense.empty()) {
+      m_dense[s] = r;
+      return;
+    }
+    if (2 * (m_entries + 1) > m_table.size()) { // at most half full
+      std::vector<std::uint64_t> old((std::max)(std::size_t(64), 2 * m_table.size()), empty);
+      old.swap(m_table);
+      for (std::uint64_t e : old)
+        if (e != empty)
+          insert(e);
+    }
+    m_reached[s / 64] |= std::uint64_t(1) << (s % 64);
+    insert((std::uint64_t(s) << 32) | r);
+    ++m_entries;
+  }
+
+private:
+  static constexpr std::uint64_t empty = ~std::uint64_t(0);
+  std::size_t hash(std::size_t s) const {
+    return std::size_t((std::uint64_t(s) * 0x9E3779B97F4A7C15ull) >> 32) & (m_table.size() - 1);
+  }
+  void insert(std::uint64_t e) {
+    std::size_t i = hash(std::size_t(e >> 32));
+    while (m_table[i] != empty)
+      i = (i + 1) & (m_table.size() - 1);
+    m_table[i] = e;
+  }
+  const std::vector<Value>* m_values = nullptr;
+  std::vector<std::array<double, D>> m_constant;
+  std::vector<std::uint32_t> m_dense;   // row per slot (global fits)
+  std::vector<std::uint64_t> m_reached; // bit per slot: has a row (local solves)
+  std::vector<std::uint64_t> m_table;   // (slot << 32 | row), open addressing
+  std::size_t m_entries = 0;
 };
 
 template <class GeomTraits, class Value, class Fixed>
@@ -76,61 +146,78 @@ Affine_slots<Value> affine_slots(C1_quintic_spline<GeomTraits, Value>& spline,
                                  const Fixed& fixed) {
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   using Traits = Value_traits<Value>;
+  using FT = typename GeomTraits::FT;
   constexpr int D = Traits::dimension;
+  constexpr bool exact = Algebraic_structure_traits<FT>::Is_exact::value;
   const std::size_t n = spline.values().size(); // control points and auxiliary slots
   const std::size_t V = spline.domain().number_of_vertices();
-  Affine_slots<Value> a;
-  a.row.assign(n, a.no_row);
-  a.constant.resize(n);
-  for (auto& c : a.constant)
-    c.fill(0);
+  // The unknowns first (the fixed values set in the spline, the unknowns at zero).
+  std::vector<Slot> unknown_slots;
   Value given = Traits::zero();
   for (Slot s : spline.free_slots()) {
     if (corners_fixed && s < V)
       given = values[s];
     else if (!fixed(s, given)) {
-      a.row[s] = static_cast<std::uint32_t>(a.row_begin.size());
-      a.row_begin.push_back(a.unknown.size());
-      a.row_size.push_back(1);
-      a.unknown.push_back(static_cast<int>(a.unknowns++));
-      a.weight.push_back(1.0);
+      unknown_slots.push_back(s);
+      spline.set_free_value(s, Traits::zero());
       continue;
     }
-    for (int c = 0; c < D; ++c)
-      a.constant[s][std::size_t(c)] = CGAL::to_double(Traits::coordinate(given, c));
     spline.set_free_value(s, given);
   }
+  Affine_slots<Value> a;
   // The global fits make every slot's row reach unknowns, about three entries each: reserved
   // at once (growing them copied 1.5 times their final size). A local solve (the adaptive
   // fit's) grows them as needed.
-  if (4 * a.unknowns > spline.free_slots().size()) {
+  const bool global = 4 * unknown_slots.size() > spline.free_slots().size();
+  a.reset(n, global, exact ? nullptr : &spline.values());
+  if (global) {
     a.row_begin.reserve(n);
     a.row_size.reserve(n);
     a.unknown.reserve(3 * n);
     a.weight.reserve(3 * n);
   }
+  if (a.stores_constants())
+    for (Slot s : spline.free_slots())
+      for (int c = 0; c < D; ++c)
+        a.stored_constant(s)[std::size_t(c)] =
+            CGAL::to_double(Traits::coordinate(spline.value(s), c));
+  else
+    spline.propagate();
+  for (Slot s : unknown_slots) {
+    a.set_row(s, static_cast<std::uint32_t>(a.row_begin.size()));
+    a.row_begin.push_back(a.unknown.size());
+    a.row_size.push_back(1);
+    a.unknown.push_back(static_cast<int>(a.unknowns++));
+    a.weight.push_back(1.0);
+  }
+  std::vector<Slot>().swap(unknown_slots);
   // A rule's row: the merge of its (at most three) sources' sorted rows, equal unknowns
   // summed in source order.
   constexpr int max_sources = 3;
   spline.for_each_rule([&](const auto& rule) {
     std::array<std::size_t, max_sources> at{}, end{};
     std::array<double, max_sources> w{};
-    std::array<double, D> k;
-    k.fill(0);
     std::size_t total = 0;
     const int sources = rule.size();
     for (int i = 0; i < sources; ++i) {
       const Slot src = rule.sources[std::size_t(i)];
       w[std::size_t(i)] = CGAL::to_double(rule.weights[std::size_t(i)]);
-      if (a.has_row(src)) {
-        at[std::size_t(i)] = a.row_begin[a.row[src]];
-        end[std::size_t(i)] = at[std::size_t(i)] + a.row_size[a.row[src]];
-        total += a.row_size[a.row[src]];
+      const std::uint32_t r = a.row_of(src);
+      if (r != a.no_row) {
+        at[std::size_t(i)] = a.row_begin[r];
+        end[std::size_t(i)] = at[std::size_t(i)] + a.row_size[r];
+        total += a.row_size[r];
       }
-      for (int c = 0; c < D; ++c)
-        k[std::size_t(c)] += w[std::size_t(i)] * a.constant[src][std::size_t(c)];
     }
-    a.constant[rule.target] = k;
+    if (a.stores_constants()) {
+      std::array<double, D> k;
+      k.fill(0);
+      for (int i = 0; i < sources; ++i)
+        for (int c = 0; c < D; ++c)
+          k[std::size_t(c)] +=
+              w[std::size_t(i)] * a.stored_constant(rule.sources[std::size_t(i)])[std::size_t(c)];
+      a.stored_constant(rule.target) = k;
+    }
     if (total == 0)
       return; // no unknown reaches the target: a constant
     const std::size_t begin = a.unknown.size();
@@ -155,7 +242,7 @@ Affine_slots<Value> affine_slots(C1_quintic_spline<GeomTraits, Value>& spline,
     a.weight.resize(out);
     if (out == begin)
       return; // the unknowns cancelled
-    a.row[rule.target] = static_cast<std::uint32_t>(a.row_begin.size());
+    a.set_row(rule.target, static_cast<std::uint32_t>(a.row_begin.size()));
     a.row_begin.push_back(begin);
     a.row_size.push_back(std::uint32_t(out - begin));
   });
@@ -295,13 +382,14 @@ Schwarz_statistics minimise_slot_quadratic(
           owning_face[s] = f;
       }
   }
-  std::vector<std::size_t> misfit_start(domain.number_of_faces() + 1, 0);
+  // (none without misfits: 8 bytes per face)
+  std::vector<std::size_t> misfit_start(misfits.empty() ? 0 : domain.number_of_faces() + 1, 0);
   std::vector<std::pair<Slot, std::array<double, D>>> face_misfits(misfits.size());
   for (const auto& m : misfits)
     ++misfit_start[owning_face[m.first] + 1];
-  for (std::size_t f = 0; f < domain.number_of_faces(); ++f)
+  for (std::size_t f = 0; f + 1 < misfit_start.size(); ++f)
     misfit_start[f + 1] += misfit_start[f];
-  {
+  if (!misfits.empty()) {
     std::vector<std::size_t> next(misfit_start.begin(), misfit_start.end() - 1);
     for (const auto& [s, t] : misfits) {
       std::array<double, D> target;
@@ -389,7 +477,7 @@ Schwarz_statistics minimise_slot_quadratic(
     entries.clear();
     for (std::size_t i = 0; i < n; ++i) {
       for (int d = 0; d < D; ++d)
-        C(Eigen::Index(i), d) = a.constant[slot[i]][std::size_t(d)];
+        C(Eigen::Index(i), d) = a.constant(slot[i], d);
       a.for_each_entry(slot[i], [&](int j, double c) {
         const auto l = std::lower_bound(columns.begin(), columns.end(), j) - columns.begin();
         entries.push_back({int(i), int(l), c});
@@ -397,7 +485,8 @@ Schwarz_statistics minimise_slot_quadratic(
     }
     const bool energy = energy_weight[f] > 0;
     const bool tension = !tension_weight.empty() && tension_weight[f] > 0;
-    const std::size_t first_misfit = misfit_start[f], last_misfit = misfit_start[f + 1];
+    const std::size_t first_misfit = face_misfits.empty() ? 0 : misfit_start[f];
+    const std::size_t last_misfit = face_misfits.empty() ? 0 : misfit_start[f + 1];
     const Eigen::Index m =
         (energy ? 30 : 0) + (tension ? 30 : 0) + Eigen::Index(last_misfit - first_misfit);
     Y.setZero(m, k);
@@ -467,7 +556,7 @@ Schwarz_statistics minimise_slot_quadratic(
           for (int d = 0; d < D; ++d) {
             double gradient = 0;
             for (std::size_t i = 0; i < 3; ++i)
-              gradient += e[i] * a.constant[t[i]][std::size_t(d)];
+              gradient += e[i] * a.constant(t[i], d);
             terms.B.col(d) += (w * gradient * area / 3) * column_sums.transpose();
           }
         }
@@ -569,7 +658,7 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
   std::size_t rows = 0;
   for (std::size_t s = 0; s < spline.number_of_slots(); ++s)
     if (a.has_row(s) && !is_own(s))
-      kept_as[a.row[s]] = 0;
+      kept_as[a.row_of(s)] = 0;
   for (std::uint32_t& k : kept_as)
     if (k == 0)
       k = std::uint32_t(rows++);
@@ -579,9 +668,9 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
       continue;
     const Value t = target(static_cast<Slot>(s));
     std::array<double, D>& r =
-        is_own(s) ? own[position[std::size_t(a.column(s))]] : y[kept_as[a.row[s]]];
+        is_own(s) ? own[position[std::size_t(a.column(s))]] : y[kept_as[a.row_of(s)]];
     for (int d = 0; d < D; ++d)
-      r[std::size_t(d)] = CGAL::to_double(Traits::coordinate(t, d)) - a.constant[s][std::size_t(d)];
+      r[std::size_t(d)] = CGAL::to_double(Traits::coordinate(t, d)) - a.constant(s, d);
   }
   std::vector<std::size_t> row_start(rows + 1, 0);
   std::vector<int> column = std::move(a.unknown);
