@@ -399,6 +399,41 @@ TEST(Spline, ExactPropagationByDepthGivesThePlanOrdersValues) {
   check(C1_quintic_spline<Exact_kernel, Exact_kernel::Vector_3>(domain));
 }
 
+TEST(Spline, ExactBarycentricWeightsInIntegersEqualTheRationalFormula) {
+  // The exact plan computes its weights over unreduced integer denominators
+  // (barycentric_of_fractions()); they must be the very rationals of the formula in
+  // rationals, for corners in either orientation, points outside the triangle, negative
+  // coordinates, large and small denominators and decimal data, and they sum to one.
+  using FT = Exact_kernel::FT;
+  using P = Exact_kernel::Point_2;
+  Random_rationals random(23);
+  std::mt19937 engine(5);
+  std::uniform_int_distribution<long> digits(-999999, 999999);
+  // 6-decimal data (FT, not a GMP expression of dead temporaries)
+  auto decimal = [&]() -> FT { return FT(digits(engine)) / FT(1000000); };
+  auto coords = [](const P& p) { return std::array<FT, 2>{{p.x(), p.y()}}; };
+  int checked = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    std::array<P, 4> p;
+    for (P& q : p)
+      q = trial % 3 == 0   ? P(decimal(), decimal())
+          : trial % 3 == 1 ? random.point<Exact_kernel>()
+                           : P(random.rational<FT>(1000000, 999983), random.rational<FT>(7, 3));
+    if (CGAL::collinear(p[1], p[2], p[3]))
+      continue;
+    const auto expected = TS::internal::barycentric_of_coordinates(coords(p[0]), coords(p[1]),
+                                                                   coords(p[2]), coords(p[3]));
+    const auto w = TS::internal::barycentric_weights_in_order(p[0], p[1], p[2], p[3]);
+    ASSERT_EQ(w[0], expected[0]) << trial;
+    ASSERT_EQ(w[1], expected[1]) << trial;
+    ASSERT_EQ(w[2], expected[2]) << trial;
+    ASSERT_EQ(w[0] + w[1] + w[2], FT(1));
+    ASSERT_EQ(w[0] * p[1].x() + w[1] * p[2].x() + w[2] * p[3].x(), p[0].x());
+    ++checked;
+  }
+  EXPECT_GT(checked, 500);
+}
+
 TEST(Spline, DoubleValuesDoNotDependOnTheVertexNumbering) {
   // The same points and triangles, vertices renumbered at random and faces shuffled and
   // rotated: the plan and every control value, free or propagated, must come out with the
