@@ -84,7 +84,8 @@ auto barycentric_of_coordinates(const Coordinates& x, const Coordinates& a, cons
 // barycentric_of_coordinates() for a number type of fractions (Fraction_traits): the
 // differences and determinants in integers, over unreduced denominators, and one reduction
 // per coordinate, where the rational formula reduces a fraction (a gcd) at each of its
-// nineteen operations. The same rationals; the exact plan spent a quarter of its time here.
+// nineteen operations. The same rationals (tested); with the formula a quarter of an exact
+// plan's time went here (2 10^4 decimal points, --fit approximate: 1.05 times faster now).
 template <class FT>
 std::array<FT, 3> barycentric_of_fractions(const std::array<FT, 2>& x, const std::array<FT, 2>& a,
                                            const std::array<FT, 2>& b, const std::array<FT, 2>& c) {
