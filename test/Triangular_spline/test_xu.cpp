@@ -1767,6 +1767,50 @@ TEST(Certificate, RoundOffInASliverIsCheckedInTheLargerNeighboursFrame) {
   EXPECT_FALSE(certify_patches().certified);
 }
 
+TEST(DelaunayDomain, ExactKernelTriangulatesCocircularPointsAsTheDoubleOne) {
+  // Exact kernels triangulate through Epeck points (intervals cached) and return to their
+  // own points by the vertices' indices. On a grid (four cocircular points in every cell,
+  // decided by CGAL's symbolic perturbation) of dyadic points, exactly doubles, shuffled,
+  // the exact domain must be the double one: the same points, triangles, values and input
+  // indices.
+  std::mt19937 engine(4);
+  const int n = 16;
+  TS::Scattered_data<Epick> data;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      data.points.emplace_back(double(i) / n, double(j) / n - 0.5);
+      data.values.push_back(double(i * 31 + j));
+    }
+  std::vector<std::size_t> order(data.points.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::shuffle(order.begin(), order.end(), engine);
+  TS::Scattered_data<Epick> shuffled;
+  TS::Scattered_data<Exact_kernel> exact;
+  for (std::size_t k : order) {
+    shuffled.points.push_back(data.points[k]);
+    shuffled.values.push_back(data.values[k]);
+    exact.points.emplace_back(data.points[k].x(), data.points[k].y());
+    exact.values.emplace_back(data.values[k]);
+  }
+  std::vector<std::size_t> index_double, index_exact;
+  const auto [domain, values] = TS::delaunay_domain(shuffled, &index_double);
+  const auto [exact_domain, exact_values] = TS::delaunay_domain(exact, &index_exact);
+  ASSERT_EQ(domain.number_of_faces(), std::size_t(2 * n * n));
+  EXPECT_EQ(exact_domain.faces(), domain.faces());
+  EXPECT_EQ(index_exact, index_double);
+  ASSERT_EQ(exact_domain.number_of_vertices(), domain.number_of_vertices());
+  for (std::size_t v = 0; v < domain.number_of_vertices(); ++v) {
+    const auto i = std::uint32_t(v);
+    EXPECT_EQ(exact_domain.point(i).x(), Exact_kernel::FT(domain.point(i).x()));
+    EXPECT_EQ(exact_domain.point(i).y(), Exact_kernel::FT(domain.point(i).y()));
+    EXPECT_EQ(exact_values[v], Exact_kernel::FT(values[v]));
+  }
+  // a repeated point is refused in both
+  exact.points.push_back(exact.points[5]);
+  exact.values.push_back(0);
+  EXPECT_THROW(TS::delaunay_domain(exact), TS::Invalid_input);
+}
+
 TEST(DelaunayDomain, FlatTrianglesClosingAJitteredGridsHullAreRemoved) {
   // A 33 x 33 grid jittered by 1e-14: Delaunay closes the nearly straight hull with fans of
   // slivers (relative heights near 1e-14). Removed, every hull point is on the boundary

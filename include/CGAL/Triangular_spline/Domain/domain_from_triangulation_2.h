@@ -38,6 +38,29 @@ template <class GeomTraits, class Triangulation, class InDomain, class VertexHan
 Planar_domain<GeomTraits> domain_from_triangulation_2(const Triangulation& triangulation,
                                                       const InDomain& in_domain,
                                                       VertexHandles& vertex_map) {
+  return domain_from_triangulation_2<GeomTraits>(
+      triangulation, in_domain, vertex_map,
+      [](typename Triangulation::Vertex_handle v) -> const typename GeomTraits::Point_2& {
+        return v->point();
+      });
+}
+
+/*!
+  \ingroup PkgTriangularSplineDomain
+  \brief as above, with the domain's points given by `point_of(v)` for each vertex handle
+  `v` (a triangulation of the same points in another kernel, its vertices carrying an
+  index into the caller's points, as `delaunay_domain()` builds for exact number types).
+  \tparam PointOf a function object from a vertex handle to a `GeomTraits::Point_2`
+  \param triangulation the CGAL 2D triangulation
+  \param in_domain the predicate on face handles selecting the faces of the domain
+  \param vertex_map receives the triangulation vertex handle of each domain vertex
+  \param point_of the point of each vertex handle
+  \returns the domain
+*/
+template <class GeomTraits, class Triangulation, class InDomain, class VertexHandles, class PointOf>
+Planar_domain<GeomTraits>
+domain_from_triangulation_2(const Triangulation& triangulation, const InDomain& in_domain,
+                            VertexHandles& vertex_map, const PointOf& point_of) {
   using Index = typename Planar_domain<GeomTraits>::Index;
   using Vertex_handle = typename Triangulation::Vertex_handle;
   constexpr Index none = Planar_domain<GeomTraits>::null_index;
@@ -51,7 +74,7 @@ Planar_domain<GeomTraits> domain_from_triangulation_2(const Triangulation& trian
       for (int i = 0; i < 3; ++i)
         if (index[f->vertex(i)] == none) {
           index[f->vertex(i)] = 0;
-          used.emplace_back(f->vertex(i)->point(), f->vertex(i));
+          used.emplace_back(point_of(f->vertex(i)), f->vertex(i));
         }
   CGAL::hilbert_sort(used.begin(), used.end(),
                      internal::Lexicographic_hilbert_traits<GeomTraits, Vertex_handle>(),
