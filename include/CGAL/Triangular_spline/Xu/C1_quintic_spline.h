@@ -10,6 +10,7 @@
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Xu/degenerate_frames.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/frame_degeneracy.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 #include <CGAL/Triangular_spline/internal/spline_plan.h>
 
@@ -927,7 +928,8 @@ private:
         const Point_2& c = point_of(f[std::size_t((i + 2) % 3)]);
         const double ux = CGAL::to_double(b.x() - a.x()), uy = CGAL::to_double(b.y() - a.y());
         const double wx = CGAL::to_double(c.x() - a.x()), wy = CGAL::to_double(c.y() - a.y());
-        const double sine = std::abs(ux * wy - uy * wx) / (std::hypot(ux, uy) * std::hypot(wx, wy));
+        const double sine =
+            std::abs(ux * wy - uy * wx) / (internal::length_2(ux, uy) * internal::length_2(wx, wy));
         worst = (std::min)(worst, sine);
       }
       // Exactly non-collinear but degenerate in double: still valid, ranked last.

@@ -101,7 +101,7 @@ enum class Fit {
   /// largest error within \f$10^{-3}\f$ of the sides 4.90 before, 0.80 now, scipy CT
   /// 1.05). Free points whose nearest vertices are all
   /// trusted take their local value (exactly as `LOCAL_POLYNOMIAL`); the others are chosen by
-  /// least energy over the untrusted vertices and three rings around them: the thin-plate
+  /// least energy over the untrusted vertices and one ring around them: the thin-plate
   /// energy plus a tension \f$(2 (1 - \bar\tau_f) / h^2) \int_f |\nabla s - \nabla g|^2\f$
   /// per face \f$f\f$ (\f$\bar\tau_f\f$ its vertices' mean trust, \f$h^2\f$ the area per
   /// vertex, \f$g\f$ the piecewise linear interpolant of the data), which pulls data that no

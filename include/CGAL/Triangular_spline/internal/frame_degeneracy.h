@@ -17,6 +17,15 @@ namespace CGAL {
 namespace Triangular_spline {
 namespace internal {
 
+// |(x, y)| without overflow or underflow: sqrt(x^2 + y^2) while the sum of squares is a
+// normal double far from the limits (then within about an ulp of std::hypot, whose
+// correct rounding cost 6% of a 10^6-point approximate build in the frame tests), hypot
+// beyond (coordinates up to 1e150 must not overflow to inf; NaN takes hypot too).
+inline double length_2(double x, double y) {
+  const double squares = x * x + y * y;
+  return squares > 1e-290 && squares < 1e290 ? std::sqrt(squares) : std::hypot(x, y);
+}
+
 // For inexact kernels: are p, r, q collinear up to the rounding of their coordinates? True
 // when the sine of the angle at r is below 1e-12. Such frames come from data that is
 // collinear in decimal but not in binary (0.1, 1/3, ...): solving them exactly would need
@@ -31,8 +40,8 @@ bool numerically_collinear(const Point_2& p, const Point_2& r, const Point_2& q)
   const double cross = ax * by - ay * bx;
   const double dot = ax * bx + ay * by;
   // Opposite directions only: apexes on the two sides with r between them.
-  // hypot, not a product of squares: coordinates up to 1e150 must not overflow to inf.
-  return dot < 0 && std::abs(cross) <= 1e-12 * std::hypot(ax, ay) * std::hypot(bx, by);
+  // Lengths, not a product of squares: coordinates up to 1e150 must not overflow to inf.
+  return dot < 0 && std::abs(cross) <= 1e-12 * length_2(ax, ay) * length_2(bx, by);
 }
 
 // The largest weight of the regular propagation at end r of edge (r, other) with apexes p

@@ -76,6 +76,9 @@ struct Schwarz_options {
   int max_sweeps = 8;
   int max_iterations = 1000;
   std::size_t threads = 0; // 0: one per core (the result does not depend on it)
+  // Not the solver's: the rings around the Adaptive fit's untrusted vertices that its energy
+  // region takes in (< 0: adaptive_energy_margin_rings, fit_vertex_data.h; tests compare).
+  int adaptive_margin_rings = -1;
 };
 
 // The margin of the fits' windows when Schwarz_options::margin_rings < 0.
