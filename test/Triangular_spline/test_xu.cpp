@@ -403,7 +403,8 @@ TEST(Spline, ExactPropagationByDepthGivesThePlanOrdersValues) {
 }
 
 TEST(Spline, ExactBarycentricWeightsInIntegersEqualTheRationalFormula) {
-  // The exact plan computes its weights over unreduced integer denominators
+  // The exact plan computes its weights in 128-bit integers where the coordinates allow
+  // (barycentric_of_small_fractions()), else over unreduced integer denominators
   // (barycentric_of_fractions()); they must be the very rationals of the formula in
   // rationals, for corners in either orientation, points outside the triangle, negative
   // coordinates, large and small denominators and decimal data, and they sum to one.
@@ -414,14 +415,19 @@ TEST(Spline, ExactBarycentricWeightsInIntegersEqualTheRationalFormula) {
   std::uniform_int_distribution<long> digits(-999999, 999999);
   // 6-decimal data (FT, not a GMP expression of dead temporaries)
   auto decimal = [&]() -> FT { return FT(digits(engine)) / FT(1000000); };
+  // beyond 2^61 once scaled: the integer path must decline
+  auto large = [&]() -> FT { return FT(digits(engine)) * FT(1e15) + FT(1) / FT(3); };
   auto coords = [](const P& p) { return std::array<FT, 2>{{p.x(), p.y()}}; };
   int checked = 0;
-  for (int trial = 0; trial < 600; ++trial) {
+  std::array<int, 4> small_paths{};
+  for (int trial = 0; trial < 800; ++trial) {
+    const int kind = trial % 4;
     std::array<P, 4> p;
     for (P& q : p)
-      q = trial % 3 == 0   ? P(decimal(), decimal())
-          : trial % 3 == 1 ? random.point<Exact_kernel>()
-                           : P(random.rational<FT>(1000000, 999983), random.rational<FT>(7, 3));
+      q = kind == 0   ? P(decimal(), decimal())
+          : kind == 1 ? random.point<Exact_kernel>()
+          : kind == 2 ? P(random.rational<FT>(1000000, 999983), random.rational<FT>(7, 3))
+                      : P(large(), decimal());
     if (CGAL::collinear(p[1], p[2], p[3]))
       continue;
     const auto expected = TS::internal::barycentric_of_coordinates(coords(p[0]), coords(p[1]),
@@ -432,9 +438,29 @@ TEST(Spline, ExactBarycentricWeightsInIntegersEqualTheRationalFormula) {
     ASSERT_EQ(w[2], expected[2]) << trial;
     ASSERT_EQ(w[0] + w[1] + w[2], FT(1));
     ASSERT_EQ(w[0] * p[1].x() + w[1] * p[2].x() + w[2] * p[3].x(), p[0].x());
+    // either path on its own
+    const auto general = TS::internal::barycentric_of_fractions(coords(p[0]), coords(p[1]),
+                                                                coords(p[2]), coords(p[3]));
+    ASSERT_EQ(general, expected) << trial;
+    if (const auto small = TS::internal::barycentric_of_small_fractions(
+            coords(p[0]), coords(p[1]), coords(p[2]), coords(p[3]))) {
+      ++small_paths[std::size_t(kind)];
+      for (std::size_t i = 0; i < 3; ++i) {
+        ASSERT_EQ((*small)[i], expected[i]) << trial;
+        // canonical, as GMP's arithmetic assumes
+        FT copy = (*small)[i];
+        copy.canonicalize();
+        ASSERT_TRUE(mpz_cmp(copy.get_den_mpz_t(), (*small)[i].get_den_mpz_t()) == 0 &&
+                    mpz_cmp(copy.get_num_mpz_t(), (*small)[i].get_num_mpz_t()) == 0)
+            << trial;
+      }
+    }
     ++checked;
   }
-  EXPECT_GT(checked, 500);
+  EXPECT_GT(checked, 700);
+  EXPECT_EQ(small_paths[0], 200); // decimal data: always in 128 bits
+  EXPECT_GT(small_paths[1], 0);
+  EXPECT_EQ(small_paths[3], 0); // too large: the general path
 }
 
 TEST(Spline, DoubleValuesDoNotDependOnTheVertexNumbering) {

@@ -20,7 +20,10 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numeric>
+#include <optional>
 #include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Triangular_spline {
@@ -120,6 +123,93 @@ std::array<FT, 3> barycentric_of_fractions(const std::array<FT, 2>& x, const std
   return {{compose(Z(Ed - A - B), Ed), compose(A, Ed), compose(B, Ed)}};
 }
 
+#if defined(__GMP_PLUSPLUS__) && defined(__SIZEOF_INT128__)
+// Greatest common divisor of two 128-bit integers, not both zero (binary: shifts and
+// subtractions only).
+inline unsigned __int128 gcd_128(unsigned __int128 a, unsigned __int128 b) {
+  auto trailing_zeros = [](unsigned __int128 v) {
+    const std::uint64_t low = std::uint64_t(v);
+    return low != 0 ? __builtin_ctzll(low) : 64 + __builtin_ctzll(std::uint64_t(v >> 64));
+  };
+  if (a == 0)
+    return b;
+  if (b == 0)
+    return a;
+  const int shift = trailing_zeros(a | b);
+  a >>= trailing_zeros(a);
+  do {
+    b >>= trailing_zeros(b);
+    if (a > b)
+      std::swap(a, b);
+    b -= a;
+  } while (b != 0);
+  return a << shift;
+}
+
+// barycentric_of_fractions() for GMP's rationals whose eight coordinates, brought to their
+// least common denominator L, are integers of magnitude below 2^61 (decimal data of up to
+// about 18 digits; doubles that share a binade): L cancels, the weights are ratios of
+// determinants of those integers, computed in 128 bits (below 2^125, so d - A - B cannot
+// overflow) and reduced by one binary gcd each: no GMP arithmetic and no allocation but the
+// results'. std::nullopt beyond, for barycentric_of_fractions(). (The same rationals, tested.)
+inline std::optional<std::array<mpq_class, 3>>
+barycentric_of_small_fractions(const std::array<mpq_class, 2>& x, const std::array<mpq_class, 2>& a,
+                               const std::array<mpq_class, 2>& b,
+                               const std::array<mpq_class, 2>& c) {
+  using I = __int128;
+  using U = unsigned __int128;
+  constexpr I bound = I(1) << 61;
+  const std::array<const mpq_class*, 8> q{{&x[0], &x[1], &a[0], &a[1], &b[0], &b[1], &c[0], &c[1]}};
+  std::uint64_t common = 1;
+  for (const mpq_class* t : q) {
+    const mpz_srcptr d = mpq_denref(t->get_mpq_t());
+    if (mpz_sizeinbase(d, 2) > 62)
+      return std::nullopt;
+    const std::uint64_t dv = std::uint64_t(mpz_get_ui(d));
+    const U l = U(common / std::gcd(common, dv)) * dv;
+    if (l >= U(bound))
+      return std::nullopt;
+    common = std::uint64_t(l);
+  }
+  std::array<I, 8> X;
+  for (std::size_t i = 0; i < 8; ++i) {
+    const mpz_srcptr n = mpq_numref(q[i]->get_mpq_t());
+    if (mpz_sizeinbase(n, 2) > 62)
+      return std::nullopt;
+    const I magnitude =
+        I(mpz_get_ui(n)) * I(common / std::uint64_t(mpz_get_ui(mpq_denref(q[i]->get_mpq_t()))));
+    if (magnitude >= bound)
+      return std::nullopt;
+    X[i] = mpz_sgn(n) < 0 ? -magnitude : magnitude;
+  }
+  const I ux = X[4] - X[2], uy = X[5] - X[3]; // b - a
+  const I vx = X[6] - X[2], vy = X[7] - X[3]; // c - a
+  const I wx = X[0] - X[2], wy = X[1] - X[3]; // x - a
+  const I d = ux * vy - uy * vx;
+  if (d == 0)
+    return std::nullopt;
+  const I A = wx * vy - wy * vx; // mu = A / d
+  const I B = ux * wy - uy * wx; // nu = B / d
+  auto set = [](mpz_ptr z, U v) {
+    mpz_set_ui(z, (unsigned long)(std::uint64_t(v >> 64)));
+    mpz_mul_2exp(z, z, 64);
+    mpz_add_ui(z, z, (unsigned long)(std::uint64_t(v)));
+  };
+  auto fraction = [&](I n) {
+    const bool negative = (n < 0) != (d < 0);
+    U un = n < 0 ? U(-n) : U(n), ud = d < 0 ? U(-d) : U(d);
+    const U g = gcd_128(un, ud);
+    mpq_class r;
+    set(r.get_num_mpz_t(), un / g);
+    set(r.get_den_mpz_t(), ud / g);
+    if (negative)
+      mpz_neg(r.get_num_mpz_t(), r.get_num_mpz_t());
+    return r; // canonical: coprime, positive denominator (1 for zero)
+  };
+  return std::array<mpq_class, 3>{{fraction(d - A - B), fraction(A), fraction(B)}};
+}
+#endif
+
 // barycentric_weights() for the corners in the order given.
 template <class Point_2>
 auto barycentric_weights_in_order(const Point_2& x, const Point_2& a, const Point_2& b,
@@ -127,9 +217,14 @@ auto barycentric_weights_in_order(const Point_2& x, const Point_2& a, const Poin
   using FT = std::decay_t<decltype(x.x())>;
   auto coords = [](const Point_2& p) { return std::array<FT, 2>{{p.x(), p.y()}}; };
   if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
-    if constexpr (std::is_same_v<typename CGAL::Fraction_traits<FT>::Is_fraction, CGAL::Tag_true>)
+    if constexpr (std::is_same_v<typename CGAL::Fraction_traits<FT>::Is_fraction, CGAL::Tag_true>) {
+#if defined(__GMP_PLUSPLUS__) && defined(__SIZEOF_INT128__)
+      if constexpr (std::is_same_v<FT, mpq_class>)
+        if (auto small = barycentric_of_small_fractions(coords(x), coords(a), coords(b), coords(c)))
+          return *small;
+#endif
       return barycentric_of_fractions(coords(x), coords(a), coords(b), coords(c));
-    else
+    } else
       return barycentric_of_coordinates(coords(x), coords(a), coords(b), coords(c));
   } else {
     const double bx = CGAL::to_double(b.x() - a.x()), by = CGAL::to_double(b.y() - a.y());
