@@ -443,7 +443,8 @@ TEST(Spline, ExactBarycentricWeightsInIntegersEqualTheRationalFormula) {
                                                                 coords(p[2]), coords(p[3]));
     ASSERT_EQ(general, expected) << trial;
     if (const auto small = TS::internal::barycentric_of_small_fractions(
-            coords(p[0]), coords(p[1]), coords(p[2]), coords(p[3]))) {
+            {{&p[0].x(), &p[0].y(), &p[1].x(), &p[1].y(), &p[2].x(), &p[2].y(), &p[3].x(),
+              &p[3].y()}})) {
       ++small_paths[std::size_t(kind)];
       for (std::size_t i = 0; i < 3; ++i) {
         ASSERT_EQ((*small)[i], expected[i]) << trial;

@@ -152,14 +152,13 @@ inline unsigned __int128 gcd_128(unsigned __int128 a, unsigned __int128 b) {
 // determinants of those integers, computed in 128 bits (below 2^125, so d - A - B cannot
 // overflow) and reduced by one binary gcd each: no GMP arithmetic and no allocation but the
 // results'. std::nullopt beyond, for barycentric_of_fractions(). (The same rationals, tested.)
+// `q`: the coordinates of x, a, b and c, in that order, read in place (copies of the eight
+// rationals took three quarters of this function's time).
 inline std::optional<std::array<mpq_class, 3>>
-barycentric_of_small_fractions(const std::array<mpq_class, 2>& x, const std::array<mpq_class, 2>& a,
-                               const std::array<mpq_class, 2>& b,
-                               const std::array<mpq_class, 2>& c) {
+barycentric_of_small_fractions(const std::array<const mpq_class*, 8>& q) {
   using I = __int128;
   using U = unsigned __int128;
   constexpr I bound = I(1) << 61;
-  const std::array<const mpq_class*, 8> q{{&x[0], &x[1], &a[0], &a[1], &b[0], &b[1], &c[0], &c[1]}};
   std::uint64_t common = 1;
   for (const mpq_class* t : q) {
     const mpz_srcptr d = mpq_denref(t->get_mpq_t());
@@ -220,7 +219,8 @@ auto barycentric_weights_in_order(const Point_2& x, const Point_2& a, const Poin
     if constexpr (std::is_same_v<typename CGAL::Fraction_traits<FT>::Is_fraction, CGAL::Tag_true>) {
 #if defined(__GMP_PLUSPLUS__) && defined(__SIZEOF_INT128__)
       if constexpr (std::is_same_v<FT, mpq_class>)
-        if (auto small = barycentric_of_small_fractions(coords(x), coords(a), coords(b), coords(c)))
+        if (auto small = barycentric_of_small_fractions(
+                {{&x.x(), &x.y(), &a.x(), &a.y(), &b.x(), &b.y(), &c.x(), &c.y()}}))
           return *small;
 #endif
       return barycentric_of_fractions(coords(x), coords(a), coords(b), coords(c));
