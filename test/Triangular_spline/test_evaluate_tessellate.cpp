@@ -18,6 +18,8 @@
 #include <CGAL/Triangular_spline/tessellate.h>
 #include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
 #include <CGAL/Triangular_spline/IO/mesh_io.h>
+#include <CGAL/Triangular_spline/internal/parallel.h>
+#include <CGAL/Triangular_spline/internal/release.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
@@ -407,6 +409,83 @@ TYPED_TEST(Output, LocatorStaysLinearOnAFan) {
   }
   EXPECT_TRUE(locator.locate(typename K::Point_2(0, 0)).has_value());
   EXPECT_FALSE(locator.locate(typename K::Point_2(FT(3) / FT(2), 0)).has_value());
+}
+
+// ---------------------------------------------------------------------------------------
+// The double plan on all cores: frames, routes, flip choices and the weights' statistics are
+// computed per vertex and per edge in parallel (this file builds without
+// CGAL_TRIANGULAR_SPLINE_CHECK_IMPLICIT_RULES, which keeps test_xu's plans serial).
+// ---------------------------------------------------------------------------------------
+
+TEST(Plan, OnAllCoresIsTheOneThreadPlan) {
+  using Spline = TS::C1_quintic_spline<Epick>;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  // random points (thin frames re-routed) and a grid jittered by rounding (degenerate frames,
+  // near-singular vertices)
+  for (const bool scattered : {true, false}) {
+    std::vector<Epick::Point_2> points;
+    if (scattered) {
+      for (int i = 0; i < 30000; ++i)
+        points.emplace_back(uniform(random), uniform(random));
+    } else {
+      for (int i = 0; i < 175; ++i)
+        for (int j = 0; j < 175; ++j)
+          points.emplace_back((i + 1e-12 * uniform(random)) / 174,
+                              (j + 1e-12 * uniform(random)) / 174);
+    }
+    Delaunay<Epick> dt(points.begin(), points.end());
+    std::vector<Delaunay<Epick>::Vertex_handle> handles;
+    const auto domain = TS::domain_from_triangulation_2<Epick>(
+        dt, [](Delaunay<Epick>::Face_handle) { return true; }, handles);
+    ASSERT_GT(domain.number_of_vertices(), 20000u); // the plan's loops run in parallel there
+    TS::internal::thread_limit() = 1;
+    const Spline one(domain);
+    TS::internal::thread_limit() = 0;
+    const Spline all(domain);
+    ASSERT_EQ(one.number_of_rules(), all.number_of_rules());
+    const std::vector<Spline::Rule> rules = all.rules(), one_rules = one.rules();
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < rules.size(); ++i)
+      differing += rules[i].target == one_rules[i].target &&
+                           rules[i].sources == one_rules[i].sources &&
+                           rules[i].weights == one_rules[i].weights
+                       ? 0
+                       : 1;
+    EXPECT_EQ(differing, 0u);
+    EXPECT_TRUE(one.free_slots() == all.free_slots());
+    EXPECT_EQ(one.number_of_stored_rules(), all.number_of_stored_rules());
+    EXPECT_TRUE(one.near_singular_vertices() == all.near_singular_vertices());
+    ASSERT_EQ(one.rerouted_frames().size(), all.rerouted_frames().size());
+    for (std::size_t i = 0; i < all.rerouted_frames().size(); ++i) {
+      const auto &a = all.rerouted_frames()[i], &b = one.rerouted_frames()[i];
+      EXPECT_TRUE(a.edge == b.edge && a.vertex == b.vertex && a.thin == b.thin &&
+                  a.numerical == b.numerical && a.regular_weight == b.regular_weight)
+          << i;
+    }
+    if (scattered) {
+      EXPECT_GT(all.rerouted_frames().size(), 1000u);
+    } else {
+      EXPECT_GT(all.near_singular_vertices().size(), 10u);
+    }
+    // the statistics, gathered by block on all cores, are those of the rules
+    const auto above = expect_weight_statistics_of_rules(all, rules);
+    expect_weight_statistics_of_rules(one, one_rules);
+    if (scattered) { // flip rules above the bound exist (the counts are tested)
+      EXPECT_GT(above[std::size_t(TS::Slot_kind::MIDDLE_INNER)], 0u);
+    }
+  }
+}
+
+// internal::release() frees a vector's storage (`v = {}` keeps it: an empty initializer
+// list assigned).
+TEST(Support, ReleaseFreesTheStorage) {
+  std::vector<double> v(100000, 1.0);
+  TS::internal::release(v);
+  EXPECT_EQ(v.capacity(), 0u);
+  std::vector<std::vector<int>> nested(1000, std::vector<int>(10));
+  TS::internal::release(nested);
+  EXPECT_EQ(nested.capacity(), 0u);
 }
 
 TEST(Locator, LazyExactKernelWithRoundedCoordinates) {

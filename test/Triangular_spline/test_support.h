@@ -12,6 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -116,6 +119,31 @@ double scale_of(const TS::Bezier_triangle<K, Value>& patch) {
   for (const Value& v : patch.control_points())
     s = (std::max)(s, TS::max_abs_coordinate(v));
   return s;
+}
+
+// Expects the spline's propagation-weight statistics (largest weight and count above the
+// bound, by slot kind) to be those of its rules; returns the counts above the bound by kind.
+template <class Spline>
+std::array<std::size_t, 6>
+expect_weight_statistics_of_rules(const Spline& spline,
+                                  const std::vector<typename Spline::Rule>& rules) {
+  using Kind = decltype(spline.kind(typename Spline::Slot{})); // Slot_kind
+  std::array<double, 6> largest{};
+  std::array<std::size_t, 6> above{};
+  for (const auto& r : rules) {
+    double w = 0;
+    for (int i = 0; i < r.size(); ++i)
+      w = (std::max)(w, std::abs(r.weights[std::size_t(i)]));
+    const std::size_t k = std::size_t(spline.kind(r.target));
+    largest[k] = (std::max)(largest[k], w);
+    above[k] += w > Spline::propagation_weight_bound ? 1 : 0;
+  }
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_EQ(spline.max_propagation_weight(Kind(k)), largest[k]) << k;
+    EXPECT_EQ(spline.number_of_rules_above_weight_bound(Kind(k)), above[k]) << k;
+  }
+  EXPECT_EQ(spline.max_propagation_weight(), *std::max_element(largest.begin(), largest.end()));
+  return above;
 }
 
 } // namespace ts_test

@@ -319,21 +319,7 @@ TEST(Spline, DoublePlanStoresFewRulesAndPropagatesInPlanOrder) {
     });
     EXPECT_EQ(visited, R);
     // the weights by kind, kept by the plan, are those of the rules
-    std::array<double, 6> largest{};
-    std::array<std::size_t, 6> above{};
-    for (const Spline::Rule& r : rules) {
-      double w = 0;
-      for (int i = 0; i < r.size(); ++i)
-        w = (std::max)(w, std::abs(r.weights[std::size_t(i)]));
-      const std::size_t k = std::size_t(spline.kind(r.target));
-      largest[k] = (std::max)(largest[k], w);
-      above[k] += w > Spline::propagation_weight_bound ? 1 : 0;
-    }
-    for (std::size_t k = 0; k < 6; ++k) {
-      EXPECT_EQ(spline.max_propagation_weight(TS::Slot_kind(k)), largest[k]) << k;
-      EXPECT_EQ(spline.number_of_rules_above_weight_bound(TS::Slot_kind(k)), above[k]) << k;
-    }
-    EXPECT_EQ(spline.max_propagation_weight(), *std::max_element(largest.begin(), largest.end()));
+    expect_weight_statistics_of_rules(spline, rules);
     // the amplification estimate (rules in runs on all cores) is the serial one's
     {
       std::vector<float> x(spline.values().size(), 0.0f);

@@ -8,6 +8,7 @@
 #include <CGAL/Triangular_spline/Domain/Scattered_data.h>
 #include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/release.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -143,7 +144,7 @@ delaunay_domain_in(const Scattered_data<GeomTraits>& data, std::vector<std::size
   for (std::size_t i = 0; i < data.points.size(); ++i)
     indexed.emplace_back(to_traits(data.points[i]), i);
   Delaunay triangulation(indexed.begin(), indexed.end());
-  indexed = {};
+  internal::release(indexed);
   if (triangulation.number_of_vertices() != data.points.size())
     throw Invalid_input("scattered data: " +
                         std::to_string(data.points.size() - triangulation.number_of_vertices()) +

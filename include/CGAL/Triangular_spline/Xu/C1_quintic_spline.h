@@ -5,13 +5,14 @@
 #define CGAL_TRIANGULAR_SPLINE_XU_C1_QUINTIC_SPLINE_H
 
 #include <CGAL/Triangular_spline/Bezier_triangle.h>
+#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Multi_index.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
-#include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Xu/degenerate_frames.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 #include <CGAL/Triangular_spline/internal/frame_degeneracy.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
+#include <CGAL/Triangular_spline/internal/release.h>
 #include <CGAL/Triangular_spline/internal/spline_plan.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
@@ -724,6 +725,50 @@ private:
     m_explicit_rules.push_back(Rule{target, sources, weights});
   }
 
+  // Double plans keep their regular rules implicit, so build_plan_once() computes those
+  // rules' weights only for the statistics (largest weight by role, count above the bound),
+  // and the frame choices and flip decisions they follow from: per vertex and per edge on
+  // all cores, before listing the rules in order. Exact plans store every rule with its
+  // weights and list them serially, as do builds that check each implicit rule.
+#ifdef CGAL_TRIANGULAR_SPLINE_CHECK_IMPLICIT_RULES
+  static constexpr bool parallel_plan = false;
+#else
+  static constexpr bool parallel_plan = !CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
+#endif
+  // The statistics add_rule() keeps, gathered per block of parallel_for_index() (a block
+  // runs on one thread) and merged in any order: maxima and counts.
+  struct Weight_statistics {
+    double largest = 0;
+    std::array<double, 6> by_kind{};
+    std::array<std::size_t, 6> above{};
+  };
+  void count_weight(Weight_statistics& w, Slot target, double largest) const {
+    const std::size_t k = std::size_t(kind(target));
+    w.largest = (std::max)(w.largest, largest);
+    w.by_kind[k] = (std::max)(w.by_kind[k], largest);
+    w.above[k] += largest > propagation_weight_bound ? 1 : 0;
+  }
+  void merge_weights(const std::vector<Weight_statistics>& blocks) {
+    for (const Weight_statistics& w : blocks) {
+      m_max_weight = (std::max)(m_max_weight, w.largest);
+      for (std::size_t k = 0; k < 6; ++k) {
+        m_max_weight_by_kind[k] = (std::max)(m_max_weight_by_kind[k], w.by_kind[k]);
+        m_above_bound_by_kind[k] += w.above[k];
+      }
+    }
+  }
+  // Runs f(i, statistics of i's block) for i in [0, n) on all cores, then merges the
+  // statistics.
+  template <class F>
+  void parallel_with_weights(std::size_t n, const F& f) {
+    std::vector<Weight_statistics> blocks((n + internal::parallel_block - 1) /
+                                          internal::parallel_block);
+    internal::parallel_for_index(n, internal::thread_count(n, 20000), [&](std::size_t i) {
+      f(i, blocks[i / internal::parallel_block]);
+    });
+    merge_weights(blocks);
+  }
+
   // Calls f(rule, block_max) for every rule, in evaluation order except that the implicit
   // rules of one kind in a row run on all cores: they never read each other's targets
   // (corner rules read their frame, edge-middle rules corner-inner and star points, flip
@@ -1063,39 +1108,42 @@ private:
       const int side = m_domain.edge(d.edge)[0] == d.vertex ? 0 : 1;
       (d.numerical ? numerical_end : exact_end)[2 * std::size_t(d.edge) + std::size_t(side)] = 1;
     }
-    for (Index e = 0; e < E; ++e) {
-      if (m_domain.is_boundary_edge(e))
-        continue;
-      const auto& ends = m_domain.edge(e);
-      const auto& ef = m_domain.edge_faces(e);
-      const Point_2& pl = m_domain.point(m_domain.opposite_vertex(ef[0], e));
-      const Point_2& pr = m_domain.point(m_domain.opposite_vertex(ef[1], e));
-      std::array<double, 2> weight{{0, 0}};
-      for (int side = 0; side < 2; ++side) {
-        const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
-        const Point_2& r = m_domain.point(ends[std::size_t(side)]);
-        const Point_2& other = m_domain.point(ends[std::size_t(1 - side)]);
-        weight[std::size_t(side)] = exact_end[k] ? std::numeric_limits<double>::infinity()
-                                                 : largest_abs(barycentric(other, pl, r, pr));
-        if (numerical_end[k]) // ranked after exact ends, before every thin one
-          weight[std::size_t(side)] = (std::numeric_limits<double>::max)();
-      }
-      const int side = weight[1] > weight[0] ? 1 : 0;
-      const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
-      const Index r = ends[std::size_t(side)];
-      Edge_route route;
-      if (exact_end[k] || numerical_end[k])
-        route.kind = End_route::DEGENERATE;
-      else if (weight[std::size_t(side)] > propagation_weight_bound && allow_thin[e])
-        route.kind = End_route::THIN;
-      else
-        continue;
-      route.end = r;
-      route.regular_weight = weight[std::size_t(side)];
-      route.mu =
-          barycentric(m_domain.point(r), pl, m_domain.point(ends[std::size_t(1 - side)]), pr);
-      routes[e] = route;
-    }
+    // (each edge's route on its own: on all cores in double)
+    internal::parallel_for_index(
+        E, parallel_plan ? internal::thread_count(E, 20000) : 1, [&](std::size_t i) {
+          const Index e = static_cast<Index>(i);
+          if (m_domain.is_boundary_edge(e))
+            return;
+          const auto& ends = m_domain.edge(e);
+          const auto& ef = m_domain.edge_faces(e);
+          const Point_2& pl = m_domain.point(m_domain.opposite_vertex(ef[0], e));
+          const Point_2& pr = m_domain.point(m_domain.opposite_vertex(ef[1], e));
+          std::array<double, 2> weight{{0, 0}};
+          for (int side = 0; side < 2; ++side) {
+            const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
+            const Point_2& r = m_domain.point(ends[std::size_t(side)]);
+            const Point_2& other = m_domain.point(ends[std::size_t(1 - side)]);
+            weight[std::size_t(side)] = exact_end[k] ? std::numeric_limits<double>::infinity()
+                                                     : largest_abs(barycentric(other, pl, r, pr));
+            if (numerical_end[k]) // ranked after exact ends, before every thin one
+              weight[std::size_t(side)] = (std::numeric_limits<double>::max)();
+          }
+          const int side = weight[1] > weight[0] ? 1 : 0;
+          const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
+          const Index r = ends[std::size_t(side)];
+          Edge_route route;
+          if (exact_end[k] || numerical_end[k])
+            route.kind = End_route::DEGENERATE;
+          else if (weight[std::size_t(side)] > propagation_weight_bound && allow_thin[e])
+            route.kind = End_route::THIN;
+          else
+            return;
+          route.end = r;
+          route.regular_weight = weight[std::size_t(side)];
+          route.mu =
+              barycentric(m_domain.point(r), pl, m_domain.point(ends[std::size_t(1 - side)]), pr);
+          routes[e] = route;
+        });
     return routes;
   }
 
@@ -1147,30 +1195,53 @@ private:
 
     // 1. Corner regions (Lemma 3.3.2): every point of the region is the affine image of its
     // domain point under the map fixed by the three prescribed points.
-    std::vector<Slot> region;
-    std::vector<const Point_2*> region_points;
+    // (In double the frames, and their rules' weights for the statistics, on all cores.)
+    auto region_slot = [&](Index v, std::size_t k) {
+      return k == 0 ? vertex_slot(v) : star_slot(m_domain.star_edges(v).first[k - 1], v);
+    };
+    auto region_point = [&](Index v, std::size_t k) -> const Point_2& {
+      return k == 0 ? m_domain.point(v) : m_domain.point(m_domain.neighbours(v).first[k - 1]);
+    };
+    std::vector<std::array<std::uint32_t, 3>> frames;
+    if constexpr (parallel_plan) {
+      frames.resize(V);
+      parallel_with_weights(V, [&](std::size_t i, Weight_statistics& w) {
+        const Index v = static_cast<Index>(i);
+        const std::array<std::size_t, 3> frame = choose_frame(v);
+        frames[i] = {{std::uint32_t(frame[0]), std::uint32_t(frame[1]), std::uint32_t(frame[2])}};
+        const Point_2 &a = region_point(v, frame[0]), &b = region_point(v, frame[1]),
+                      &c = region_point(v, frame[2]);
+        const std::size_t size = 1 + m_domain.degree(v);
+        for (std::size_t k = 0; k < size; ++k)
+          if (k != frame[0] && k != frame[1] && k != frame[2])
+            count_weight(w, region_slot(v, k),
+                         largest_abs(barycentric(region_point(v, k), a, b, c)));
+      });
+    }
     for (Index v = 0; v < V; ++v) {
-      const auto [nb, ne] = m_domain.neighbours(v);
-      const auto [eb, ee] = m_domain.star_edges(v);
-      region.assign(1, vertex_slot(v));
-      region_points.assign(1, &m_domain.point(v));
-      for (auto e = eb; e != ee; ++e)
-        region.push_back(star_slot(*e, v));
-      for (auto w = nb; w != ne; ++w)
-        region_points.push_back(&m_domain.point(*w));
-      const std::array<std::size_t, 3> frame = choose_frame(v);
+      const std::size_t size = 1 + m_domain.degree(v);
+      std::array<std::size_t, 3> frame;
+      if constexpr (parallel_plan)
+        frame = {{frames[v][0], frames[v][1], frames[v][2]}};
+      else
+        frame = choose_frame(v);
       for (std::size_t k : frame)
-        m_free[region[k]] = 1;
+        m_free[region_slot(v, k)] = 1;
       m_frame_order[v] = frame_order_code(frame);
-      const Point_2 &a = *region_points[frame[0]], &b = *region_points[frame[1]],
-                    &c = *region_points[frame[2]];
-      for (std::size_t k = 0; k < region.size(); ++k) {
+      for (std::size_t k = 0; k < size; ++k) {
         if (k == frame[0] || k == frame[1] || k == frame[2])
           continue;
-        add_rule(region[k], {{region[frame[0]], region[frame[1]], region[frame[2]]}},
-                 barycentric(*region_points[k], a, b, c), true);
+        if constexpr (parallel_plan)
+          m_rule_refs.push_back(region_slot(v, k)); // implicit, weights counted above
+        else
+          add_rule(region_slot(v, k),
+                   {{region_slot(v, frame[0]), region_slot(v, frame[1]), region_slot(v, frame[2])}},
+                   barycentric(region_point(v, k), region_point(v, frame[0]),
+                               region_point(v, frame[1]), region_point(v, frame[2])),
+                   true);
       }
     }
+    internal::release(frames);
     thin_edge_of_rule.assign(m_rule_refs.size(), Domain::null_index);
 
     std::vector<Edge_route> routes = route_edges(allow_thin);
@@ -1351,6 +1422,28 @@ private:
     std::vector<char> closing_edge(E, 0);
     for (const Closing& c : m_closing)
       closing_edge[c.edge] = 1;
+    // the regular ends' rules (closing ones are stored): weights of s in (p_left, r, p_right)
+    auto middle_weights = [&](Index e, int side) {
+      const auto& ends = m_domain.edge(e);
+      const auto& ef = m_domain.edge_faces(e);
+      return barycentric(m_domain.point(ends[std::size_t(1 - side)]),
+                         m_domain.point(m_domain.opposite_vertex(ef[0], e)),
+                         m_domain.point(ends[std::size_t(side)]),
+                         m_domain.point(m_domain.opposite_vertex(ef[1], e)));
+    };
+    auto implicit_middle = [&](Index e, int side) {
+      const Index r = m_domain.edge(e)[std::size_t(side)];
+      return !m_domain.is_boundary_edge(e) && routes[e].end != r &&
+             !(closing_edge[e] && closing_of(e, r));
+    };
+    if constexpr (parallel_plan)
+      parallel_with_weights(E, [&](std::size_t i, Weight_statistics& w) {
+        const Index e = static_cast<Index>(i);
+        for (int side = 0; side < 2; ++side)
+          if (implicit_middle(e, side))
+            count_weight(w, edge_middle_slot(e, m_domain.edge(e)[std::size_t(side)]),
+                         largest_abs(middle_weights(e, side)));
+      });
     for (Index e = 0; e < E; ++e) {
       const auto& ends = m_domain.edge(e);
       if (m_domain.is_boundary_edge(e)) {
@@ -1361,19 +1454,20 @@ private:
         continue;
       }
       const auto& ef = m_domain.edge_faces(e);
-      const Point_2& pl = m_domain.point(m_domain.opposite_vertex(ef[0], e));
-      const Point_2& pr = m_domain.point(m_domain.opposite_vertex(ef[1], e));
       for (int side = 0; side < 2; ++side) {
-        const Index r = ends[std::size_t(side)], s = ends[std::size_t(1 - side)];
+        const Index r = ends[std::size_t(side)];
         if (routes[e].end == r)
           continue;
         if (const auto closing = closing_edge[e] ? closing_of(e, r) : nullptr) {
           add_wide_rule(edge_middle_slot(e, r), *closing, thin_edge_of_rule);
           continue;
         }
-        add_rule(edge_middle_slot(e, r),
-                 {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
-                 barycentric(m_domain.point(s), pl, m_domain.point(r), pr), true);
+        if constexpr (parallel_plan)
+          m_rule_refs.push_back(edge_middle_slot(e, r)); // implicit, weights counted above
+        else
+          add_rule(edge_middle_slot(e, r),
+                   {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
+                   middle_weights(e, side), true);
         thin_edge_of_rule.push_back(Domain::null_index);
       }
     }
@@ -1409,23 +1503,59 @@ private:
     // two choices the one with the smaller largest weight is taken (Xu prescribes the flip
     // of the farther apex, which bounds the flip's own weight by 1 but not the edge points'
     // weights, which grow where the quadrilateral is far from convex).
-    for (Index e = 0; e < E; ++e) {
-      if (m_domain.is_boundary_edge(e) || routes[e].end != Domain::null_index)
-        continue;
+    // (In double the choices, and the chosen rules' weights for the statistics, on all cores:
+    // free_flip[e] 1 for the left flip, 2 for the right one.)
+    auto flip_weights = [&](Index e, bool left_free) {
       const auto& ends = m_domain.edge(e);
       const auto& ef = m_domain.edge_faces(e);
       const Point_2& apex_left = m_domain.point(m_domain.opposite_vertex(ef[0], e));
       const Point_2& apex_right = m_domain.point(m_domain.opposite_vertex(ef[1], e));
       const Point_2 &lo = m_domain.point(ends[0]), &hi = m_domain.point(ends[1]);
-      const std::array<FT, 3> right_from_left = barycentric(apex_right, apex_left, lo, hi);
-      const std::array<FT, 3> left_from_right = barycentric(apex_left, apex_right, lo, hi);
-      const bool left_free = !(largest_abs(left_from_right) < largest_abs(right_from_left));
+      return left_free ? barycentric(apex_right, apex_left, lo, hi)
+                       : barycentric(apex_left, apex_right, lo, hi);
+    };
+    auto regular_edge = [&](Index e) {
+      return !m_domain.is_boundary_edge(e) && routes[e].end == Domain::null_index;
+    };
+    std::vector<unsigned char> free_flip;
+    if constexpr (parallel_plan) {
+      free_flip.assign(E, 0);
+      parallel_with_weights(E, [&](std::size_t i, Weight_statistics& w) {
+        const Index e = static_cast<Index>(i);
+        if (!regular_edge(e))
+          return;
+        const double right = largest_abs(flip_weights(e, true)),
+                     left = largest_abs(flip_weights(e, false));
+        const bool left_free = !(left < right);
+        free_flip[i] = left_free ? 1 : 2;
+        const auto& ef = m_domain.edge_faces(e);
+        count_weight(w, flip_slot(left_free ? ef[1] : ef[0], e), left_free ? right : left);
+      });
+    }
+    for (Index e = 0; e < E; ++e) {
+      if (!regular_edge(e))
+        continue;
+      const auto& ends = m_domain.edge(e);
+      const auto& ef = m_domain.edge_faces(e);
+      bool left_free;
+      std::array<FT, 3> weights;
+      if constexpr (parallel_plan) {
+        left_free = free_flip[e] == 1;
+      } else {
+        const std::array<FT, 3> right_from_left = flip_weights(e, true);
+        const std::array<FT, 3> left_from_right = flip_weights(e, false);
+        left_free = !(largest_abs(left_from_right) < largest_abs(right_from_left));
+        weights = left_free ? right_from_left : left_from_right;
+      }
       const Index free_face = left_free ? ef[0] : ef[1], other_face = left_free ? ef[1] : ef[0];
       m_free[flip_slot(free_face, e)] = 1;
-      add_rule(
-          flip_slot(other_face, e),
-          {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
-          left_free ? right_from_left : left_from_right, true);
+      if constexpr (parallel_plan)
+        m_rule_refs.push_back(flip_slot(other_face, e)); // implicit, weights counted above
+      else
+        add_rule(
+            flip_slot(other_face, e),
+            {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
+            weights, true);
       thin_edge_of_rule.push_back(Domain::null_index);
     }
   }

@@ -438,6 +438,8 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
         free_slots.size(), threads,
         [&](std::size_t i) { spline.set_free_value(free_slots[i], target(free_slots[i])); }, block);
   }
+  // The polynomials (21 coefficients per vertex) are not read again.
+  local.reset();
   spline.propagate();
   static const char* const methods[] = {"", "direct", "windows", "conjugate_gradients"};
   statistics.solver_method = methods[solved.method];

@@ -11,6 +11,7 @@
 #include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/Xu/C1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Xu/thin_plate_energy.h>
+#include <CGAL/Triangular_spline/internal/release.h>
 #include <CGAL/Triangular_spline/internal/schwarz_solver.h>
 
 #include <CGAL/Simple_cartesian.h>
@@ -401,7 +402,7 @@ Schwarz_statistics minimise_slot_quadratic(
   // Regrouped by face: the caller's list (every slot's target in a least-squares fit, 16
   // bytes per slot) goes before the solve.
   std::vector<std::pair<std::uint32_t, Value>>().swap(misfits);
-  owning_face = {};
+  release(owning_face);
   // the owners of the unknowns (owning_vertex())
   std::vector<Slot> slot_of(a.unknowns);
   std::vector<std::uint32_t> owner(a.unknowns);
@@ -646,7 +647,7 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
     for (std::size_t j = 0; j < n; ++j)
       position[j] = std::uint32_t(next[owner[j]]++);
   }
-  owner = {};
+  release(owner);
   // R = [I; S] (rows permuted): the unknowns' own rows, kept as their targets t_own (a
   // sixth of R's entries, and of the rows' loop), and S, the other control slots' rows
   // (CSR, each row sorted) with y = t - c. S is compacted in a's arrays, its columns
@@ -698,7 +699,7 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
     column.resize(out);
     weight.resize(out);
   }
-  kept_as = {};
+  release(kept_as);
   a = {};
   // N's diagonal blocks (I plus S's products), packed lower triangles
   std::vector<std::uint32_t> vertex_of(n);
@@ -721,7 +722,7 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
       for (std::size_t q = p + 1; q-- > row_start[r] && vertex_of[column[q]] == v;)
         L[i * (i + 1) / 2 + (column[q] - start[v])] += weight[p] * weight[q];
     }
-  vertex_of = {};
+  release(vertex_of);
   // each block replaced by its inverse (packed lower triangle)
   {
     Eigen::MatrixXd B;

@@ -17,10 +17,19 @@ namespace CGAL {
 namespace Triangular_spline {
 namespace internal {
 
+// The most threads thread_count() gives (0: one per core). Tests set 1 to compare a parallel
+// result with the one-thread result bit for bit; nothing else changes it.
+inline std::size_t& thread_limit() {
+  static std::size_t limit = 0;
+  return limit;
+}
+
 // The threads for n independent items: one per core, but none for fewer than `grain` items
 // each (a thread costs about 50 microseconds to start).
 inline std::size_t thread_count(std::size_t n, std::size_t grain) {
-  const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
+  std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
+  if (thread_limit() > 0)
+    cores = (std::min)(cores, thread_limit());
   return (std::min)(cores, n / (std::max<std::size_t>)(grain, 1) + 1);
 }
 

@@ -5,6 +5,7 @@
 #define CGAL_TRIANGULAR_SPLINE_INTERNAL_SCHWARZ_SOLVER_H
 
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/release.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -442,7 +443,7 @@ schwarz_minimise(std::size_t vertices, const std::vector<std::uint32_t>& owner, 
       else
         ++earlier[c];
   }
-  conflicts = {};
+  release(conflicts);
   std::vector<double> chain(windows, 0);
   {
     std::vector<std::uint32_t> order(windows);
