@@ -114,7 +114,8 @@ void BM_exact_build_and_certify(benchmark::State& state) {
 void BM_local_edit(benchmark::State& state) {
   TS::C1_quintic_spline<Fast> spline(jittered_grid<Fast>(300));
   TS::fit_vertex_data(spline, heights(spline.domain()), TS::Fit::APPROXIMATE);
-  const auto& free = spline.free_slots();
+  const auto range = spline.free_slots();
+  const std::vector<TS::C1_quintic_spline<Fast>::Slot> free(range.begin(), range.end());
   std::size_t i = 0;
   std::size_t changed = 0;
   for (auto _ : state) {

@@ -216,6 +216,13 @@ std::vector<std::pair<std::string, Planar_domain<K>>> all_domains() {
           {"fan four lines", fan<K>(4)}};
 }
 
+// The free slots as a list (free_slots() is a forward range).
+template <class Spline>
+std::vector<typename Spline::Slot> free_list(const Spline& spline) {
+  const auto free = spline.free_slots();
+  return {free.begin(), free.end()};
+}
+
 // Random values in every free slot, then propagation.
 template <class K, class Value>
 void randomize(C1_quintic_spline<K, Value>& spline, Random_rationals& random) {
@@ -688,6 +695,38 @@ TEST(Certificate, AllCoresGiveTheSerialVerdictEdgeByEdge) {
   EXPECT_EQ(i, certificate.edges.size());
 }
 
+TEST(Certificate, WithoutEdgeVerdictsTheSameTotalsBlockByBlock) {
+  // edge_verdicts(false): no per-edge entries, the edges checked in blocks (here of 1000),
+  // the totals those of the full certificate: on exact C^1 data, and with failing edges.
+  using K = Epick;
+  namespace TSP = TS::parameters;
+  C1_quintic_spline<K> spline(random_delaunay<K>(2000, 31));
+  Random_rationals random(29);
+  randomize(spline, random);
+  const std::size_t saved = TS::internal::certificate_block();
+  TS::internal::certificate_block() = 1000;
+  for (int nudged : {0, 1}) {
+    if (nudged) // a free corner-inner point off its value: the certificate is not C^1
+      for (auto s : spline.free_slots())
+        if (spline.kind(s) == TS::Slot_kind::CORNER_INNER && s % 7 == 0)
+          spline.set_free_value(s, spline.value(s) + 1e-3);
+    const auto full = TS::certify_continuity(spline, 1, TSP::residual_tolerance(1e-9));
+    const auto totals =
+        TS::certify_continuity(spline, 1, TSP::residual_tolerance(1e-9, TSP::edge_verdicts(false)));
+    ASSERT_GT(full.interior_edges, 3000u);
+    EXPECT_TRUE(totals.edges.empty());
+    EXPECT_EQ(totals.interior_edges, full.interior_edges);
+    EXPECT_EQ(totals.failed_edges, full.failed_edges);
+    EXPECT_EQ(totals.nonzero_edges, full.nonzero_edges);
+    EXPECT_EQ(totals.max_residual, full.max_residual);
+    EXPECT_EQ(totals.max_residual_log10, full.max_residual_log10);
+    EXPECT_EQ(totals.lowest_order, full.lowest_order);
+    EXPECT_EQ(totals.verdict, full.verdict);
+    EXPECT_EQ(full.failed_edges > 0, nudged == 1);
+  }
+  TS::internal::certificate_block() = saved;
+}
+
 TEST(Parallel, EveryIndexOnceAndTheSmallestIndexThrows) {
   std::vector<int> visits(100000, 0);
   TS::internal::parallel_for_index(visits.size(), 4, [&](std::size_t i) { ++visits[i]; });
@@ -840,7 +879,7 @@ TEST(Spline, LocalEditsStayInTheRingAndKeepC1) {
     C1_quintic_spline<K> spline(domain);
     randomize(spline, random);
     for (int trial = 0; trial < 25; ++trial) {
-      const auto& free = spline.free_slots();
+      const auto free = free_list(spline);
       const auto s = free[std::size_t(random.integer(0, int(free.size()) - 1))];
       const std::vector<std::uint32_t> changed = spline.edit(s, random.rational<K::FT>());
       ASSERT_FALSE(changed.empty());
@@ -1439,6 +1478,128 @@ TEST(LocalFit, CrossValidationChoosesHighDegreesForSmoothDataAndLowOnesForNoise)
   EXPECT_GT(noise_low, domain.number_of_vertices() * 6 / 10);
 }
 
+TEST(LocalFit, OnDemandFitsAreTheFitsOfAllVertices) {
+  // ON_DEMAND keeps only the vertices of the last fit(): theirs are the polynomials that
+  // fitting every vertex gives, bit for bit in double and equal in exact rationals
+  // (fraction-free: a vertex's denominators must not be left from the one kept before it).
+  auto check = [](const auto& domain, const auto& z, int degree) {
+    using K = typename std::decay_t<decltype(domain)>::Geom_traits;
+    const TS::Local_polynomials<K> all(domain, z, degree);
+    TS::Local_polynomials<K> some(domain, z, degree, TS::Degree_selection::CROSS_VALIDATION, 0,
+                                  TS::Exact_elimination::FRACTION_FREE,
+                                  TS::Local_polynomial_storage::ON_DEMAND);
+    const Index V = Index(domain.number_of_vertices());
+    EXPECT_FALSE(some.is_kept(0));
+    std::vector<Index> odd, first;
+    for (Index v = 1; v < V; v += 2)
+      odd.push_back(v);
+    for (Index v = 0; v < V / 3; ++v)
+      first.push_back(v);
+    for (const auto* kept : {&odd, &first}) {
+      some.fit(*kept);
+      for (Index v = 0; v < V; ++v) {
+        const bool in = std::find(kept->begin(), kept->end(), v) != kept->end();
+        ASSERT_EQ(some.is_kept(v), in) << v;
+        if (!in)
+          continue;
+        EXPECT_EQ(some.degree(v), all.degree(v));
+        EXPECT_EQ(some.resolution(v), all.resolution(v));
+        EXPECT_EQ(some.radius(v), all.radius(v));
+        EXPECT_EQ(some.gradient(v), all.gradient(v));
+        // f(v^2 w x^3) for a face of v: a polar value reading every coefficient
+        const auto [fb, fe] = domain.star_faces(v);
+        const auto& t = domain.face(*fb);
+        const Index w = t[0] == v ? t[1] : t[0], x = t[2] == v ? t[1] : t[2];
+        const std::array<std::pair<const typename K::Point_2*, int>, 3> label{
+            {{&domain.point(v), 2}, {&domain.point(w), 1}, {&domain.point(x), 2}}};
+        EXPECT_EQ(some.polar_value(v, label.begin(), label.end(), 5),
+                  all.polar_value(v, label.begin(), label.end(), 5));
+        EXPECT_EQ(some.value(v, domain.point(w)), all.value(v, domain.point(w)));
+      }
+    }
+  };
+  const auto domain = random_delaunay<Epick>(300, 12);
+  std::vector<double> z;
+  for (const auto& p : domain.points())
+    z.push_back(std::exp(p.x()) * std::sin(2 * p.y()) + 0.01 * std::cos(37 * p.x()));
+  check(domain, z, 5);
+  const auto exact = random_delaunay<Exact_kernel>(45, 3);
+  std::vector<Exact_kernel::FT> q;
+  for (const auto& p : exact.points())
+    q.push_back(p.x() * p.x() * p.y() / (1 + p.y() * p.y()) + p.x());
+  check(exact, q, 3);
+  // fit() only with ON_DEMAND, each vertex of the domain once
+  TS::Local_polynomials<Epick> all(domain, z, 5);
+  EXPECT_TRUE(throws_with([&] { all.fit({0}); }, "ON_DEMAND"));
+  TS::Local_polynomials<Epick> some(domain, z, 5, TS::Degree_selection::CROSS_VALIDATION, 0,
+                                    TS::Exact_elimination::FRACTION_FREE,
+                                    TS::Local_polynomial_storage::ON_DEMAND);
+  EXPECT_TRUE(throws_with([&] { some.fit({3, 4, 3}); }, "vertex 3 is listed twice"));
+  EXPECT_FALSE(some.is_kept(3) || some.is_kept(4));
+  EXPECT_TRUE(
+      throws_with([&] { some.fit({Index(domain.number_of_vertices())}); }, "is not in the domain"));
+  some.fit({4, 3});
+  EXPECT_EQ(some.value(3, domain.point(4)), all.value(3, domain.point(4)));
+}
+
+TEST(LocalFit, StreamedFitsGiveEveryFreeSlotItsTargetWhateverTheBlocks) {
+  // The local and Adaptive fits hold one block of polynomials at a time. Every free slot must
+  // get its target (the mean of its tied vertices' polar values on this grid, where no
+  // polynomial is read beyond its reach), and the spline must not depend on the blocks: one
+  // block, 97 vertices, 1 vertex; for the Adaptive fit on data whose noise brings in the
+  // energy solve and the blend, with its region's polynomials fitted again.
+  std::mt19937 engine(9);
+  const auto domain = delaunay_of<Epick>(jittered_grid(40, 0.5, engine));
+  std::vector<double> smooth, noisy;
+  std::normal_distribution<double> noise(0, 0.05);
+  for (const auto& p : domain.points()) {
+    smooth.push_back(std::exp(p.x()) * std::sin(2 * p.y()));
+    noisy.push_back(smooth.back() + (p.x() > 0.6 && p.y() > 0.5 ? noise(engine) : 0.0));
+  }
+  using Spline = C1_quintic_spline<Epick>;
+  auto fitted = [&](const std::vector<double>& z, Fit fit, std::size_t block) {
+    Spline spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    TS::internal::Schwarz_options options;
+    options.local_block = block;
+    const TS::Fit_statistics statistics = TS::internal::fit_vertex_data(
+        spline, z, fit, 5, TS::Degree_selection::CROSS_VALIDATION, 0, {}, options);
+    return std::pair(spline, statistics);
+  };
+  const auto [local, statistics] = fitted(smooth, Fit::LOCAL_POLYNOMIAL, 0);
+  ASSERT_EQ(statistics.vertices_beyond_reach, 0u);
+  const TS::Local_polynomials<Epick> all(domain, smooth, 5);
+  std::size_t checked = 0;
+  for (Spline::Slot s : local.free_slots()) {
+    const auto label = local.polar_label(s);
+    std::array<std::pair<const Epick::Point_2*, int>, 3> arguments;
+    std::size_t count = 0;
+    int largest = 0;
+    for (const auto& [vertex, multiplicity] : label) {
+      arguments[count++] = {&domain.point(vertex), multiplicity};
+      largest = (std::max)(largest, multiplicity);
+    }
+    double sum = 0;
+    int ties = 0;
+    for (const auto& [vertex, multiplicity] : label)
+      if (multiplicity == largest) {
+        sum = sum + all.polar_value(vertex, arguments.begin(), arguments.begin() + count, 5);
+        ++ties;
+      }
+    ASSERT_EQ(local.value(s), ties == 1 ? sum : (1.0 / ties) * sum) << s;
+    ++checked;
+  }
+  EXPECT_EQ(checked, local.number_of_free_parameters());
+  for (Fit fit : {Fit::LOCAL_POLYNOMIAL, Fit::ADAPTIVE})
+    for (const auto* z : {&smooth, &noisy}) {
+      const auto [one, one_statistics] = fitted(*z, fit, 0);
+      if (fit == Fit::ADAPTIVE && z == &noisy) {
+        EXPECT_GT(one_statistics.vertices_by_trust[1] + one_statistics.vertices_by_trust[2], 0u);
+      }
+      for (std::size_t block : {97u, 1u})
+        EXPECT_EQ(fitted(*z, fit, block).first.values(), one.values()) << block;
+    }
+}
+
 TEST(LocalFit, ConvergesWithOrderAboveThreeAndAHalf) {
   // exp(x) sin(2y) on jittered grids h = 1/8, 1/16, 1/32 (boundary kept on the square):
   // the observed order of the largest error at the face centroids and edge midpoints of a
@@ -1633,7 +1794,7 @@ TEST(StablePropagation, NearSingularVerticesKeepEveryWeightBounded) {
         // The same random free values (multiples of 1/128: exact in double) in both builds.
         // (At the singular vertex two roots of the cycle of links tie; rounding picks one.)
         if (!singular) {
-          ASSERT_EQ(fast.free_slots(), spline.free_slots());
+          ASSERT_EQ(free_list(fast), free_list(spline));
         }
         Random_rationals random(17);
         for (auto s : spline.free_slots()) {
@@ -2194,7 +2355,7 @@ TEST(MinimalEnergy, InterpolatesWithLessEnergyThanAnyOtherFit) {
   std::mt19937 engine(5);
   for (int trial = 0; trial < 20; ++trial) {
     C1_quintic_spline<Epick> moved = energy;
-    const auto& free = moved.free_slots();
+    const auto free = free_list(moved);
     const auto s = free[std::size_t(engine() % free.size())];
     if (s < domain.number_of_vertices())
       continue;
@@ -3370,8 +3531,9 @@ TEST(Certificate, FastExactVerdictsAgreeWithTheFullCheckEdgeByEdge) {
         read.insert(entry.first);
     });
     std::size_t edits = 0;
-    for (std::size_t i = 0; i < spline.free_slots().size(); i += 5) {
-      const auto s = spline.free_slots()[i];
+    const auto free = free_list(spline);
+    for (std::size_t i = 0; i < free.size(); i += 5) {
+      const auto s = free[i];
       const K::FT v = spline.value(s);
       const std::array<K::FT, 2> edits_of_v{
           {K::FT(K::FT(v.get_num()) / K::FT(v.get_den() + 1)),
@@ -3413,8 +3575,9 @@ TEST(Certificate, FastDoubleResidualsAreTheFullChecksBits) {
     for (double v : spline.values())
       scale = (std::max)(scale, std::abs(v));
     C1_quintic_spline<Epick> stale = spline;
-    for (std::size_t i = 0; i < stale.free_slots().size(); i += 7) {
-      const auto s = stale.free_slots()[i];
+    const auto free = free_list(stale);
+    for (std::size_t i = 0; i < free.size(); i += 7) {
+      const auto s = free[i];
       stale.set_free_value(s, stale.value(s) + 1e-3); // not propagated
     }
     for (const C1_quintic_spline<Epick>* network : {&spline, &stale})

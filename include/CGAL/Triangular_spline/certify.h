@@ -27,19 +27,18 @@ namespace Triangular_spline {
 
 /*!
   \ingroup PkgTriangularSplineContinuity
-  \brief the named parameters of `certify_continuity()`: `residual_tolerance(double)` and
-  `join_conditions(Join_conditions)`, each as `f(value)` (starts a pack) or `f(value, np)`
-  (appends to `np`), e.g.
-  \code
-  namespace TSP = CGAL::Triangular_spline::parameters;
-  certify_continuity(spline, 1, TSP::residual_tolerance(1e-10));
-  certify_continuity(network, 2, TSP::join_conditions(Join_conditions::LAI));
-  \endcode
+  \brief the named parameters of `certify_continuity()`: `residual_tolerance(double)`,
+  `join_conditions(Join_conditions)` and `edge_verdicts(bool)`, each as `f(value)` (starts a pack)
+  or `f(value, np)` (appends to `np`), e.g. \code namespace TSP =
+  CGAL::Triangular_spline::parameters; certify_continuity(spline, 1,
+  TSP::residual_tolerance(1e-10)); certify_continuity(network, 2,
+  TSP::join_conditions(Join_conditions::LAI)); \endcode
 */
 namespace parameters {
 #ifndef DOXYGEN_RUNNING // documented in the namespace and in certify_continuity()
 CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(residual_tolerance, double)
 CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(join_conditions, Join_conditions)
+CGAL_TRIANGULAR_SPLINE_NAMED_PARAMETER(edge_verdicts, bool)
 #endif
 } // namespace parameters
 
@@ -93,6 +92,15 @@ struct Continuity_certificate {
   std::vector<Edge_certificate> edges; ///< per interior edge, in edge order
 };
 
+namespace internal {
+// The edges certify_continuity() checks at a time without edge verdicts (10 MB of them;
+// tests take fewer).
+inline std::size_t& certificate_block() {
+  static std::size_t edges = std::size_t(1) << 18;
+  return edges;
+}
+} // namespace internal
+
 /*!
   \ingroup PkgTriangularSplineContinuity
   \brief certifies that the patches of `network` join with \f$C^k\f$ continuity across every
@@ -127,9 +135,17 @@ struct Continuity_certificate {
       \cgalParamType{`Join_conditions`}
       \cgalParamDefault{`Join_conditions::EXTENSION`}
     \cgalParamNEnd
+    \cgalParamNBegin{edge_verdicts}
+      \cgalParamDescription{whether the certificate keeps one verdict per interior edge; if
+      `false`, `edges` stays empty and the edges are checked a block at a time (the verdicts
+      take 40 bytes per edge: 120 MB for \f$10^6\f$ scattered points), the totals the same}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
   \cgalNamedParamsEnd
 
-  \returns the certificate, one entry per interior edge in edge order
+  \returns the certificate, one entry per interior edge in edge order (none if
+  `edge_verdicts` is `false`)
   \throws Invalid_input if `k` is negative, or two patches across an edge differ in degree or
   `k` exceeds it
 */
@@ -157,11 +173,6 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
   certificate.exact = CGAL::Algebraic_structure_traits<typename Geom_traits::FT>::Is_exact::value;
   certificate.tolerance = tolerance > 0 ? tolerance : 0;
   certificate.lowest_order = k;
-  std::vector<Index> interior;
-  interior.reserve(domain.number_of_interior_edges());
-  for (Index e = 0; e < domain.number_of_edges(); ++e)
-    if (!domain.is_boundary_edge(e))
-      interior.push_back(e);
   // Slot networks of degree 5 (C1_quintic_spline) with heights: exact ones are decided on
   // the slots by internal::fast_exact_C1_join(), an exact test without patches or gcds;
   // double ones get the full check's residuals read on the slots
@@ -184,43 +195,37 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
     use_fast = k == 1 && conditions == Join_conditions::EXTENSION && network.degree() == 5;
   // The edges are independent: checked on all cores (exact checks only on the fast path, the
   // others allocate), the verdicts collected in edge order.
-  certificate.edges.resize(interior.size());
-  internal::parallel_for_index(
-      interior.size(),
-      certificate.exact && !use_fast ? 1 : internal::thread_count(interior.size(), 20000),
-      [&](std::size_t i) {
-        const Index e = interior[i];
-        const auto& ef = domain.edge_faces(e);
-        Edge_certificate& c = certificate.edges[i];
-        if constexpr (fast_exact) {
-          if (use_fast && internal::fast_exact_C1_join(network, e) == internal::Fast_join::ZERO) {
-            c.edge = e;
-            c.vertices = {{domain.edge(e)[0], domain.edge(e)[1]}};
-            c.achieved_order = 1;
-            c.holds = c.zero = true;
-            return;
-          }
-        }
-        if constexpr (fast_double) {
-          if (use_fast && internal::fast_double_C1_join(network, e, certificate.tolerance, c))
-            return;
-        }
-        const Join_report report =
-            k == 1 && conditions == Join_conditions::EXTENSION
-                ? internal::check_C1_join_in_larger_frame(
-                      network.patch(ef[0]), network.patch(ef[1]), certificate.tolerance)
-                : check_join(network.patch(ef[0]), network.patch(ef[1]), k, conditions,
-                             certificate.tolerance);
+  auto check = [&](Index e, Edge_certificate& c) {
+    const auto& ef = domain.edge_faces(e);
+    if constexpr (fast_exact) {
+      if (use_fast && internal::fast_exact_C1_join(network, e) == internal::Fast_join::ZERO) {
         c.edge = e;
         c.vertices = {{domain.edge(e)[0], domain.edge(e)[1]}};
-        c.achieved_order = report.achieved_order;
-        c.holds = report.holds;
-        c.residual = report.max_residual;
-        c.residual_log10 = report.max_residual_log10;
-        c.zero = std::all_of(report.conditions.begin(), report.conditions.end(),
-                             [](const Join_condition& j) { return j.zero; });
-      });
-  for (const Edge_certificate& c : certificate.edges) {
+        c.achieved_order = 1;
+        c.holds = c.zero = true;
+        return;
+      }
+    }
+    if constexpr (fast_double) {
+      if (use_fast && internal::fast_double_C1_join(network, e, certificate.tolerance, c))
+        return;
+    }
+    const Join_report report =
+        k == 1 && conditions == Join_conditions::EXTENSION
+            ? internal::check_C1_join_in_larger_frame(network.patch(ef[0]), network.patch(ef[1]),
+                                                      certificate.tolerance)
+            : check_join(network.patch(ef[0]), network.patch(ef[1]), k, conditions,
+                         certificate.tolerance);
+    c.edge = e;
+    c.vertices = {{domain.edge(e)[0], domain.edge(e)[1]}};
+    c.achieved_order = report.achieved_order;
+    c.holds = report.holds;
+    c.residual = report.max_residual;
+    c.residual_log10 = report.max_residual_log10;
+    c.zero = std::all_of(report.conditions.begin(), report.conditions.end(),
+                         [](const Join_condition& j) { return j.zero; });
+  };
+  auto count = [&](const Edge_certificate& c) {
     if (!(c.residual <= certificate.max_residual))
       certificate.max_residual = c.residual;
     if (!(c.residual_log10 <= certificate.max_residual_log10))
@@ -230,8 +235,30 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
       ++certificate.failed_edges;
     if (!c.zero)
       ++certificate.nonzero_edges;
+    ++certificate.interior_edges;
+  };
+  const std::size_t threads =
+      certificate.exact && !use_fast
+          ? 1
+          : internal::thread_count(domain.number_of_interior_edges(), 20000);
+  // All verdicts at once, or blocks of edges (counted in edge order all the same).
+  const bool keep = choose_parameter(get_parameter(np, internal_np::edge_verdicts), true);
+  const std::size_t block = keep ? domain.number_of_edges() : internal::certificate_block();
+  std::vector<Index> interior;
+  std::vector<Edge_certificate> verdicts;
+  for (std::size_t first = 0; first < domain.number_of_edges(); first += block) {
+    const std::size_t last = (std::min)(domain.number_of_edges(), first + block);
+    interior.clear();
+    for (std::size_t e = first; e < last; ++e)
+      if (!domain.is_boundary_edge(static_cast<Index>(e)))
+        interior.push_back(static_cast<Index>(e));
+    std::vector<Edge_certificate>& out = keep ? certificate.edges : verdicts;
+    out.assign(interior.size(), Edge_certificate());
+    internal::parallel_for_index(interior.size(), threads,
+                                 [&](std::size_t i) { check(interior[i], out[i]); });
+    for (const Edge_certificate& c : out)
+      count(c);
   }
-  certificate.interior_edges = certificate.edges.size();
   certificate.certified = certificate.failed_edges == 0;
   certificate.verdict =
       certificate_verdict(certificate.exact, certificate.failed_edges, certificate.nonzero_edges);

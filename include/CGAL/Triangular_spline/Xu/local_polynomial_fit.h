@@ -56,6 +56,19 @@ enum class Exact_elimination {
 
 /*!
   \ingroup PkgTriangularSplineSplines
+  \brief which vertices' coefficients `Local_polynomials` keeps.
+*/
+enum class Local_polynomial_storage {
+  /// every vertex is fitted by the constructor and keeps its coefficients
+  ALL_VERTICES,
+  /// the constructor fits no vertex; `Local_polynomials::fit()` fits chosen vertices and
+  /// keeps only theirs: a pass over a large domain holds one block's coefficients at a time
+  /// (all of them take 21 values per vertex, 168 MB at \f$10^6\f$ vertices in `double`)
+  ON_DEMAND
+};
+
+/*!
+  \ingroup PkgTriangularSplineSplines
   \brief one local polynomial per domain vertex, fitted to the data around it: the
   estimate of the underlying function that the `Fit::LOCAL_POLYNOMIAL` fit of a
   `C1_quintic_spline` reads its control points from.
@@ -102,7 +115,10 @@ enum class Exact_elimination {
   fraction-free in its integers and each coefficient is kept as a numerator over a common
   denominator per vertex, from which `polar_value()` sums in integers: about 4 ms per
   quintic vertex for scattered `double` data, whose exact coefficients run to thousands of
-  digits (rational elimination: about half a second).
+  digits (rational elimination: about half a second). The coefficients take 21 values per
+  vertex; with `Local_polynomial_storage::ON_DEMAND` only those of the vertices of the last
+  `fit()` are kept, so that a pass over a large domain holds one block of them (the
+  `LOCAL_POLYNOMIAL` and `ADAPTIVE` fits of `fit_vertex_data()` do).
 
   \tparam GeomTraits a model of `Kernel`
   \tparam Value `GeomTraits::FT` or a vector type, see `Value_traits`
@@ -134,13 +150,17 @@ public:
     \param elimination how exact number types solve the normal equations: over the integers
     of their fractions where they have `Fraction_traits` (the default and the fast way), or
     by rational elimination (for tests: both give the same rationals)
+    \param storage `ALL_VERTICES` fits every vertex now; `ON_DEMAND` fits none (see `fit()`),
+    and `values` must then outlive the object
   */
   Local_polynomials(const Domain& domain, const std::vector<Value>& values, int max_degree = 3,
                     Degree_selection selection = Degree_selection::CROSS_VALIDATION,
                     std::size_t threads = 0,
-                    Exact_elimination elimination = Exact_elimination::FRACTION_FREE)
-      : m_domain(&domain), m_max_degree(max_degree), m_selection(selection),
-        m_fraction_free(elimination == Exact_elimination::FRACTION_FREE) {
+                    Exact_elimination elimination = Exact_elimination::FRACTION_FREE,
+                    Local_polynomial_storage storage = Local_polynomial_storage::ALL_VERTICES)
+      : m_domain(&domain), m_data(&values), m_max_degree(max_degree), m_selection(selection),
+        m_fraction_free(elimination == Exact_elimination::FRACTION_FREE), m_threads(threads),
+        m_on_demand(storage == Local_polynomial_storage::ON_DEMAND) {
     if (values.size() != domain.number_of_vertices())
       throw Invalid_input("local fit: " + std::to_string(values.size()) + " data values for " +
                           std::to_string(domain.number_of_vertices()) + " vertices");
@@ -152,32 +172,51 @@ public:
     m_resolution.assign(V, 1.0);
     m_radius.assign(V, 0.0f);
     m_scale.assign(V, FT(1));
-    m_coefficients.assign(V * coefficients_per_vertex, Value_traits<Value>::zero());
-    if constexpr (fraction_free) {
-      if (m_fraction_free) {
-        m_numerators.assign(V * coefficients_per_vertex * D, Integer(0));
-        m_denominators.assign(V * D, Integer(0));
-      }
+    if (m_on_demand) {
+      m_stored_at.assign(V, not_kept);
+      return;
     }
-    // The fits are independent: one thread per core on large inputs (each vertex's result
-    // does not depend on the partition, so output is deterministic). An exact fit costs
-    // milliseconds, so exact builds go parallel from a few hundred vertices.
-    if (threads == 0) {
-      const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
-      threads = (std::min)(cores, V / (exact ? 128 : 2000) + 1);
-    }
-    auto fit_range = [&](std::size_t first) {
-      Workspace work;
-      for (std::size_t v = first; v < V; v += threads)
-        fit_vertex(static_cast<Index>(v), values, work);
-    };
-    std::vector<std::thread> workers;
-    for (std::size_t t = 1; t < threads; ++t)
-      workers.emplace_back(fit_range, t);
-    fit_range(0);
-    for (std::thread& worker : workers)
-      worker.join();
+    allocate(V);
+    fit_list(V, [](std::size_t i) { return static_cast<Index>(i); });
   }
+
+  /*!
+    fits the polynomials of `vertices` (distinct), on the constructor's number of threads,
+    and keeps their coefficients instead of those kept so far. The degree, resolution and
+    radius of every vertex fitted stay available. A vertex's polynomial does not depend on
+    the others fitted with it, nor on the number of threads.
+    \throws Invalid_input if the object was not constructed with
+    `Local_polynomial_storage::ON_DEMAND`, or `vertices` repeats a vertex or names none of
+    the domain (then no vertex is kept)
+    \param vertices the vertices to fit
+  */
+  void fit(const std::vector<Index>& vertices) {
+    if (!m_on_demand)
+      throw Invalid_input("local fit: fit() needs Local_polynomial_storage::ON_DEMAND");
+    for (Index v : m_kept)
+      m_stored_at[v] = not_kept;
+    m_kept = vertices;
+    for (std::size_t i = 0; i < m_kept.size(); ++i) {
+      const Index v = m_kept[i];
+      if (std::size_t(v) >= m_stored_at.size() || m_stored_at[v] != not_kept) {
+        for (std::size_t j = 0; j < i; ++j)
+          m_stored_at[m_kept[j]] = not_kept;
+        m_kept.clear();
+        throw Invalid_input(
+            "local fit: vertex " + std::to_string(v) +
+            (std::size_t(v) >= m_stored_at.size() ? " is not in the domain" : " is listed twice"));
+      }
+      m_stored_at[v] = static_cast<std::uint32_t>(i);
+    }
+    allocate(m_kept.size());
+    fit_list(m_kept.size(), [&](std::size_t i) { return m_kept[i]; });
+  }
+
+  /// returns whether the coefficients of \f$p_v\f$ are kept (`value()`, `polar_value()` and
+  /// `gradient()` need them): always with `ALL_VERTICES`, after `fit()` with `ON_DEMAND`.
+  /// \param v the index of a vertex
+  /// \returns whether the coefficients of \f$p_v\f$ are kept
+  bool is_kept(Index v) const { return !m_on_demand || m_stored_at[v] != not_kept; }
 
   /// returns the degree \f$d_v\f$ chosen at vertex `v`.
   /// \param v the index of a vertex
@@ -267,7 +306,7 @@ public:
     if constexpr (fraction_free)
       if (has_fraction(v))
         return polar_value_fraction_free(v, e, (std::min)(d, passes), n);
-    Value sum = m_coefficients[coefficients_per_vertex * std::size_t(v)];
+    Value sum = m_coefficients[coefficients_per_vertex * at(v)];
     for (int h = 0; h <= d; ++h)
       for (int k = 0; h + k <= d; ++k) {
         if (h + k == 0)
@@ -295,6 +334,46 @@ public:
 private:
   static constexpr std::size_t coefficients_per_vertex =
       (max_supported_degree + 1) * (max_supported_degree + 2) / 2;
+  static constexpr std::uint32_t not_kept = std::numeric_limits<std::uint32_t>::max();
+  // Where v's coefficients are: their block in m_coefficients (and m_numerators).
+  std::size_t at(Index v) const {
+    CGAL_precondition(is_kept(v));
+    return m_on_demand ? std::size_t(m_stored_at[v]) : std::size_t(v);
+  }
+  // Zeroed coefficient storage for n vertices (a fraction-free vertex is recognised by its
+  // non-zero denominator, so none may be left from the vertices kept before).
+  void allocate(std::size_t n) {
+    m_coefficients.assign(n * coefficients_per_vertex, Value_traits<Value>::zero());
+    if constexpr (fraction_free) {
+      if (m_fraction_free) {
+        m_numerators.assign(n * coefficients_per_vertex * D, Integer(0));
+        m_denominators.assign(n * D, Integer(0));
+      }
+    }
+  }
+  // Fits vertex_at(i) for i in [0, n). The fits are independent: one thread per core on
+  // large inputs (each vertex's result does not depend on the partition, so output is
+  // deterministic). An exact fit costs milliseconds, so exact builds go parallel from a few
+  // hundred vertices.
+  template <class Vertex_at>
+  void fit_list(std::size_t n, const Vertex_at& vertex_at) {
+    std::size_t threads = m_threads;
+    if (threads == 0) {
+      const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
+      threads = (std::min)(cores, n / (exact ? 128 : 2000) + 1);
+    }
+    auto fit_range = [&](std::size_t first) {
+      Workspace work;
+      for (std::size_t i = first; i < n; i += threads)
+        fit_vertex(vertex_at(i), *m_data, work);
+    };
+    std::vector<std::thread> workers;
+    for (std::size_t t = 1; t < threads; ++t)
+      workers.emplace_back(fit_range, t);
+    fit_range(0);
+    for (std::thread& worker : workers)
+      worker.join();
+  }
   static constexpr int D = Value_traits<Value>::dimension;
   static constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
   // Exact number types that are fractions of an integer type fit over those integers.
@@ -334,17 +413,16 @@ private:
   // Whether v's coefficients of degree >= 1 are kept as numerators over a common
   // denominator (then only there: reducing each fraction costs a gcd of thousands of digits).
   bool has_fraction(Index v) const {
-    return !m_denominators.empty() && !CGAL::is_zero(m_denominators[std::size_t(v) * D]);
+    return !m_denominators.empty() && !CGAL::is_zero(m_denominators[at(v) * D]);
   }
   // The coefficient of xi^h eta^k of such a vertex.
   Value fraction(Index v, int h, int k) const {
     typename Fraction_traits<FT>::Compose compose;
     std::array<FT, std::size_t(D)> cs;
     for (int j = 0; j < D; ++j)
-      cs[std::size_t(j)] =
-          compose(m_numerators[(coefficients_per_vertex * std::size_t(v) + position(h, k)) * D +
-                               std::size_t(j)],
-                  m_denominators[std::size_t(v) * D + std::size_t(j)]);
+      cs[std::size_t(j)] = compose(
+          m_numerators[(coefficients_per_vertex * at(v) + position(h, k)) * D + std::size_t(j)],
+          m_denominators[at(v) * D + std::size_t(j)]);
     return Value_traits<Value>::from_coordinates(cs);
   }
 
@@ -371,20 +449,18 @@ private:
           common = divide(common, gcd(common, q[i])) * q[i];
       }
     std::array<FT, std::size_t(D)> cs;
-    const Value& constant = m_coefficients[coefficients_per_vertex * std::size_t(v)];
+    const Value& constant = m_coefficients[coefficients_per_vertex * at(v)];
     for (int j = 0; j < D; ++j) {
       Integer sum(0);
       for (int t = 1; t <= top; ++t)
         for (int h = 0; h <= t; ++h) {
           const std::size_t i = position(h, t - h);
           if (!CGAL::is_zero(p[i]))
-            sum +=
-                p[i] * divide(common, q[i]) *
-                m_numerators[(coefficients_per_vertex * std::size_t(v) + i) * D + std::size_t(j)];
+            sum += p[i] * divide(common, q[i]) *
+                   m_numerators[(coefficients_per_vertex * at(v) + i) * D + std::size_t(j)];
         }
-      cs[std::size_t(j)] =
-          Value_traits<Value>::coordinate(constant, j) +
-          compose(sum, common * m_denominators[std::size_t(v) * D + std::size_t(j)]);
+      cs[std::size_t(j)] = Value_traits<Value>::coordinate(constant, j) +
+                           compose(sum, common * m_denominators[at(v) * D + std::size_t(j)]);
     }
     return Value_traits<Value>::from_coordinates(cs);
   }
@@ -394,10 +470,10 @@ private:
     return std::size_t(t * (t + 1) / 2 + k);
   }
   const Value& coefficient(Index v, int h, int k) const {
-    return m_coefficients[coefficients_per_vertex * std::size_t(v) + position(h, k)];
+    return m_coefficients[coefficients_per_vertex * at(v) + position(h, k)];
   }
   Value& coefficient(Index v, int h, int k) {
-    return m_coefficients[coefficients_per_vertex * std::size_t(v) + position(h, k)];
+    return m_coefficients[coefficients_per_vertex * at(v) + position(h, k)];
   }
 
   // The points a fit of degree d takes: 1.5 times its unknowns (a plane: 2).
@@ -1180,9 +1256,9 @@ private:
       const Integer denominator = det * common[3 + std::size_t(j)];
       for (int t = 1, col = 0; t <= d; ++t)
         for (int k = 0; k <= t; ++k, ++col)
-          m_numerators[(coefficients_per_vertex * std::size_t(v) + position(t - k, k)) * D +
+          m_numerators[(coefficients_per_vertex * at(v) + position(t - k, k)) * D +
                        std::size_t(j)] = y[std::size_t(col)] * Lp[std::size_t(t)];
-      m_denominators[std::size_t(v) * D + std::size_t(j)] = denominator;
+      m_denominators[at(v) * D + std::size_t(j)] = denominator;
     }
     return true;
   }
@@ -1248,9 +1324,14 @@ private:
   }
 
   const Domain* m_domain;
+  const std::vector<Value>* m_data;
   int m_max_degree;
   Degree_selection m_selection;
   bool m_fraction_free;
+  std::size_t m_threads;
+  bool m_on_demand;
+  std::vector<std::uint32_t> m_stored_at; // ON_DEMAND: kept vertex's block, or not_kept
+  std::vector<Index> m_kept;              // ON_DEMAND: the vertices kept
   double m_tie_ratio = 1.1;
   std::vector<int> m_degree;
   std::vector<double> m_resolution;

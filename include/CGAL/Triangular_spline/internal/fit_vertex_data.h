@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -112,6 +113,10 @@ inline double local_polynomial_miss(double miss) {
   return miss >= 1e-1 ? 1 : std::log10(miss / 1e-2);
 }
 
+// The local and Adaptive fits hold the polynomials of this many vertices at a time (21
+// coefficients each: 11 MB in double), not all of them (168 MB at 10^6 vertices).
+constexpr std::size_t local_polynomial_block = 65536;
+
 // fit_vertex_data() with the solver's options, and what the solver did (tests, benchmarks).
 template <class GeomTraits, class Value>
 Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
@@ -163,11 +168,31 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     star = values[v] + dx * given_gradients[v][0] + dy * given_gradients[v][1];
     return true;
   };
+  if (!(smoothing >= 0) || !std::isfinite(smoothing))
+    throw Invalid_input("fit: the smoothing must be a finite number >= 0");
+  if (smoothing > 0 && fit != Fit::MINIMAL_ENERGY)
+    throw Invalid_input("fit: smoothing needs the minimal-energy fit");
+  if (tension) {
+    if (!(*tension >= 0) || !std::isfinite(*tension))
+      throw Invalid_input("fit: the tension must be a finite number >= 0");
+    if (*tension > 0 && fit != Fit::ADAPTIVE && fit != Fit::MINIMAL_ENERGY)
+      throw Invalid_input("fit: a tension needs the adaptive or the minimal-energy fit");
+    if (smoothing > 0 && *tension > 0)
+      throw Invalid_input("fit: a tension pulls toward the interpolant of the data; it does "
+                          "not go with smoothing");
+  }
   std::optional<Local_polynomials<GeomTraits, Value>> local;
-  // A windowed energy solve starts from the local polynomials' values: the first sweep's
-  // windows see them beyond their margins.
-  if (fit == Fit::LOCAL_POLYNOMIAL || fit == Fit::LEAST_SQUARES || fit == Fit::ADAPTIVE ||
-      (fit == Fit::MINIMAL_ENERGY && spline.number_of_free_parameters() > options.direct_limit))
+  // The local and Adaptive fits stream: each block of vertices is fitted and writes its
+  // shares of the free slots' targets at once (below). The least-squares fit and the
+  // minimal-energy solve read any slot's target at any time. A windowed energy solve starts
+  // from the local polynomials' values: the first sweep's windows see them beyond their
+  // margins.
+  const bool streamed = fit == Fit::LOCAL_POLYNOMIAL || fit == Fit::ADAPTIVE;
+  if (streamed)
+    local.emplace(domain, values, local_degree, selection, 0, Exact_elimination::FRACTION_FREE,
+                  Local_polynomial_storage::ON_DEMAND);
+  else if (fit == Fit::LEAST_SQUARES || (fit == Fit::MINIMAL_ENERGY &&
+                                         spline.number_of_free_parameters() > options.direct_limit))
     local.emplace(domain, values, local_degree, selection);
   // Per-slot work runs on all cores: in double from 50000 free values, exactly (a polar value
   // of a local polynomial costs about a tenth of a millisecond there) from 500.
@@ -201,11 +226,6 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       pull = (std::max)(pull, edge_pull(v, std::uint32_t(*w)));
     return pull;
   };
-  if (local)
-    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v) {
-      ++statistics.vertices_by_degree[std::size_t(local->degree(v))];
-      statistics.vertices_beyond_reach += vertex_pull(v) > 0 ? 1 : 0;
-    }
   // The polar form of the piecewise linear interpolant at a label: its vertices' data values
   // weighted by their multiplicities, summed in the lexicographic order of the points (not
   // the numbering's).
@@ -280,19 +300,90 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     }
     return Value((FT(1) / FT(ties)) * v);
   };
-  if (!(smoothing >= 0) || !std::isfinite(smoothing))
-    throw Invalid_input("fit: the smoothing must be a finite number >= 0");
-  if (smoothing > 0 && fit != Fit::MINIMAL_ENERGY)
-    throw Invalid_input("fit: smoothing needs the minimal-energy fit");
-  if (tension) {
-    if (!(*tension >= 0) || !std::isfinite(*tension))
-      throw Invalid_input("fit: the tension must be a finite number >= 0");
-    if (*tension > 0 && fit != Fit::ADAPTIVE && fit != Fit::MINIMAL_ENERGY)
-      throw Invalid_input("fit: a tension needs the adaptive or the minimal-energy fit");
-    if (smoothing > 0 && *tension > 0)
-      throw Invalid_input("fit: a tension pulls toward the interpolant of the data; it does "
-                          "not go with smoothing");
+  // The streamed pass: vertex u's share of the target of each free slot where u has the
+  // largest multiplicity (target() sums the shares of tied vertices in label order, and
+  // divides by their number). Only middle-inner slots, f(u w^2 x^2), have two, and a sum of
+  // two terms does not depend on their order, so each share is added as soon as it is
+  // computed (under a lock: the other may be added by another thread at the same time).
+  // The vertices' pulls are kept for the trust below.
+  std::vector<double> pull_of;
+  if (streamed) {
+    const std::size_t V = domain.number_of_vertices();
+    pull_of.assign(V, 0.0);
+    for (Slot s : spline.free_slots())
+      if (spline.kind(s) == Slot_kind::MIDDLE_INNER)
+        spline.set_free_value(s, Value_traits<Value>::zero());
+    std::array<std::mutex, 64> locks;
+    auto share = [&](std::uint32_t u, Slot s) {
+      if (!spline.is_free(s))
+        return;
+      Value star;
+      if (given_star(s, star)) {
+        spline.set_free_value(s, star);
+        return;
+      }
+      const auto label = spline.polar_label(s);
+      Value add;
+      const double pull = extrapolation_pull(u, label);
+      if (pull >= 1) {
+        add = linear_average(label);
+      } else {
+        std::array<std::pair<const typename GeomTraits::Point_2*, int>, 3> arguments;
+        std::size_t count = 0;
+        for (const auto& [vertex, multiplicity] : label)
+          arguments[count++] = {&domain.point(vertex), multiplicity};
+        const Value polar = local->polar_value(u, arguments.begin(), arguments.begin() + count, 5);
+        add =
+            pull > 0 ? Value((FT(1) - FT(pull)) * polar + FT(pull) * linear_average(label)) : polar;
+      }
+      if (spline.kind(s) != Slot_kind::MIDDLE_INNER) {
+        spline.set_free_value(s, Value(Value_traits<Value>::zero() + add));
+        return;
+      }
+      std::lock_guard<std::mutex> hold(locks[s % locks.size()]);
+      spline.set_free_value(s, Value(spline.value(s) + add));
+    };
+    auto shares = [&](std::uint32_t u) {
+      pull_of[u] = vertex_pull(u);
+      share(u, Slot(u));
+      const auto [eb, ee] = domain.star_edges(u);
+      for (auto e = eb; e != ee; ++e) { // f(u^4 w), f(u^3 w^2)
+        const bool first = domain.edge(*e)[0] == u;
+        const Slot s = Slot(V + 4 * std::size_t(*e));
+        share(u, first ? s : s + 3);
+        share(u, first ? s + 1 : s + 2);
+      }
+      const auto [fb, fe] = domain.star_faces(u);
+      for (auto f = fb; f != fe; ++f) { // f(u^3 w x), f(u^2 w^2 x), f(u^2 w x^2)
+        const auto& t = domain.face(*f);
+        const int at = t[0] == u ? 0 : t[1] == u ? 1 : 2;
+        for (int i = 0; i < 6; ++i)
+          if (i == at || (i >= 3 && i - 3 != at))
+            share(u, spline.face_slot(*f, i));
+      }
+    };
+    const std::size_t block =
+        options.local_block > 0 ? options.local_block : internal::local_polynomial_block;
+    std::vector<std::uint32_t> vertices;
+    for (std::size_t first = 0; first < V; first += block) {
+      vertices.resize((std::min)(block, V - first));
+      for (std::size_t i = 0; i < vertices.size(); ++i)
+        vertices[i] = std::uint32_t(first + i);
+      local->fit(vertices);
+      internal::parallel_for_index(
+          vertices.size(), internal::thread_count(vertices.size(), exact ? 16 : 2000),
+          [&](std::size_t i) { shares(vertices[i]); }, exact ? 1 : 64);
+    }
+    for (Slot s : spline.free_slots())
+      if (spline.kind(s) == Slot_kind::MIDDLE_INNER)
+        spline.set_free_value(s, Value((FT(1) / FT(2)) * spline.value(s)));
   }
+  auto pull_at = [&](std::uint32_t v) { return streamed ? pull_of[v] : vertex_pull(v); };
+  if (local)
+    for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v) {
+      ++statistics.vertices_by_degree[std::size_t(local->degree(v))];
+      statistics.vertices_beyond_reach += pull_at(v) > 0 ? 1 : 0;
+    }
   // The tension's weight: adaptive_tension by default in the adaptive fit (times each
   // vertex's distrust), none in the minimal-energy fit (Xu's thin plate).
   const double tension_weight = tension                ? *tension
@@ -320,7 +411,7 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       // pulled targets: the solve's set-up takes time linear in the whole spline (a
       // propagation, a pass over every rule and every face), not in the region.
       if (unresolved)
-        trust[v] = (std::min)(trust[v], 1 - vertex_pull(v));
+        trust[v] = (std::min)(trust[v], 1 - pull_at(v));
       ++statistics.vertices_by_trust[trust[v] >= 1 ? 0 : trust[v] > 0 ? 1 : 2];
     }
     // Fully trusted data need no solve: the fit is then Local_polynomial.
@@ -361,26 +452,31 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
                                 options.adaptive_margin_rings >= 0
                                     ? options.adaptive_margin_rings
                                     : internal::adaptive_energy_margin_rings);
-    // The slots the energy solve keeps fixed take their local values first, on all cores
-    // (each slot's value depends on the slot alone).
+    // The slots the energy solve keeps fixed have their local values from the streamed
+    // pass. The solve starts the others from their targets, and the blend below reads the
+    // polynomials of their tied vertices: those of the region and next to it are fitted
+    // again (each fit is the same as in the pass).
     auto outside_solve = [&](Slot s) {
       for (std::uint32_t v : nearest(s))
         if (ring[v] >= 0)
           return false;
       return true;
     };
-    const std::vector<Slot>& free_slots = spline.free_slots();
-    internal::parallel_for_index(
-        free_slots.size(), threads,
-        [&](std::size_t i) {
-          const Slot s = free_slots[i];
-          Value star;
-          if (given_star(s, star))
-            spline.set_free_value(s, star);
-          else if (outside_solve(s))
-            spline.set_free_value(s, target(s));
-        },
-        block);
+    {
+      std::vector<char> near(domain.number_of_vertices(), 0);
+      for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+        if (ring[v] >= 0) {
+          near[v] = 1;
+          const auto [nb, ne] = domain.neighbours(v);
+          for (auto w = nb; w != ne; ++w)
+            near[*w] = 1;
+        }
+      std::vector<std::uint32_t> refit;
+      for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
+        if (near[v])
+          refit.push_back(v);
+      local->fit(refit);
+    }
     std::vector<double> distrust_tension;
     if (tension_weight > 0)
       for (std::uint32_t v = 0; v < domain.number_of_vertices(); ++v)
@@ -392,7 +488,7 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
             return true;
           if (!outside_solve(s))
             return false;
-          fixed = spline.value(s); // target(s), set above
+          fixed = spline.value(s); // target(s), from the streamed pass
           return true;
         },
         target, options);
@@ -432,11 +528,14 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     }
   } else if (fit == Fit::LEAST_SQUARES) {
     solved = internal::least_squares_free_values(spline, values, target, given_star, options);
-  } else {
-    const std::vector<Slot>& free_slots = spline.free_slots();
+  } else if (!streamed) {
     internal::parallel_for_index(
-        free_slots.size(), threads,
-        [&](std::size_t i) { spline.set_free_value(free_slots[i], target(free_slots[i])); }, block);
+        spline.number_of_slots(), threads,
+        [&](std::size_t i) {
+          if (spline.is_free(Slot(i)))
+            spline.set_free_value(Slot(i), target(Slot(i)));
+        },
+        block);
   }
   // The polynomials (21 coefficients per vertex) are not read again.
   local.reset();

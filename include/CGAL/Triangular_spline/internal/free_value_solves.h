@@ -169,7 +169,7 @@ Affine_slots<Value> affine_slots(C1_quintic_spline<GeomTraits, Value>& spline,
   // The global fits make every slot's row reach unknowns, about three entries each: reserved
   // at once (growing them copied 1.5 times their final size). A local solve (the adaptive
   // fit's) grows them as needed.
-  const bool global = 4 * unknown_slots.size() > spline.free_slots().size();
+  const bool global = 4 * unknown_slots.size() > spline.number_of_free_parameters();
   a.reset(n, global, exact ? nullptr : &spline.values());
   if (global) {
     a.row_begin.reserve(n);

@@ -25,6 +25,7 @@ namespace internal_np {
 // certify_continuity() (certify.h)
 enum residual_tolerance_t { residual_tolerance };
 enum join_conditions_t { join_conditions };
+enum edge_verdicts_t { edge_verdicts };
 
 // make_c1_quintic_spline() (Xu/make_c1_quintic_spline.h)
 enum data_fit_t { data_fit };

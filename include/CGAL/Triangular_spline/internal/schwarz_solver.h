@@ -80,6 +80,9 @@ struct Schwarz_options {
   // Not the solver's: the rings around the Adaptive fit's untrusted vertices that its energy
   // region takes in (< 0: adaptive_energy_margin_rings, fit_vertex_data.h; tests compare).
   int adaptive_margin_rings = -1;
+  // Nor this: the vertices whose local polynomials the local and Adaptive fits hold at once
+  // (0: local_polynomial_block, fit_vertex_data.h; tests take a few to cross blocks).
+  std::size_t local_block = 0;
 };
 
 // The margin of the fits' windows when Schwarz_options::margin_rings < 0.
