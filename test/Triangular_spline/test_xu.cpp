@@ -327,25 +327,28 @@ TEST(Spline, DoublePlanStoresFewRulesAndPropagatesInPlanOrder) {
     EXPECT_EQ(visited, R);
     // the weights by kind, kept by the plan, are those of the rules
     expect_weight_statistics_of_rules(spline, rules);
-    // the amplification estimate (rules in runs on all cores) is the serial one's
+    // the amplification estimate (rules in runs on all cores, with the plan, in the values'
+    // storage) is the serial one's, and the values are left at zero
     {
-      std::vector<float> x(spline.values().size(), 0.0f);
+      std::vector<double> x(spline.values().size(), 0.0);
+      EXPECT_EQ(spline.values(), x);
       std::mt19937 signs(1);
       for (const Spline::Slot s : spline.free_slots()) {
         const TS::Slot_kind k = spline.kind(s);
         if (k != TS::Slot_kind::CORNER && k != TS::Slot_kind::STAR)
-          x[s] = (signs() & 1) ? 1.0f : -1.0f;
+          x[s] = (signs() & 1) ? 1.0 : -1.0;
       }
       double amplification = 0;
       for (const Spline::Rule& r : rules) {
         double v = 0;
         for (int i = 0; i < r.size(); ++i)
           v += r.weights[std::size_t(i)] * x[r.sources[std::size_t(i)]];
-        x[r.target] = static_cast<float>(v);
+        x[r.target] = v;
         amplification = (std::max)(amplification, std::abs(v));
       }
       for (const Spline::Slot s : spline.free_slots())
-        amplification = (std::max)(amplification, double(std::abs(x[s])));
+        amplification = (std::max)(amplification, std::abs(x[s]));
+      EXPECT_GT(amplification, 1.0);
       EXPECT_EQ(spline.propagation_amplification(), amplification);
     }
     for (Spline::Slot s : spline.free_slots())

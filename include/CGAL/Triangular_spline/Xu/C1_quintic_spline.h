@@ -440,8 +440,11 @@ public:
   }
   /// returns an estimate of how much the propagation amplifies inconsistent prescribed
   /// points: the largest absolute control value when every corner region is zero and every
-  /// other free point is an independent random sign (fixed seed, computed in double on a
-  /// copy; one pass over the rules). A single weight need not amplify: weights that combine
+  /// other free point is an independent random sign (fixed seed; one pass over the rules).
+  /// With `double` values it is computed with the plan, in the control values' storage
+  /// before they are set (a copy would be the largest allocation of a `tspline c1` run: 200
+  /// MB at \f$10^6\f$ points); other value types compute it in `float` on a copy. A single
+  /// weight need not amplify: weights that combine
   /// points whose deviations cancel do not (the closing link of a vertex 1e-8 degrees from
   /// singular, solved alone, had weights of 1e10 and this estimate 4). Corner regions are
   /// left out because any three values are one plane: their weights extrapolate a tangent
@@ -449,26 +452,12 @@ public:
   /// estimate stays below about twice the bound (a rule's weights sum to one).
   /// \returns the estimated amplification (0 if no point outside the corner regions is free)
   double propagation_amplification() const {
-    std::vector<float> x(m_values.size(), 0.0f); // float: an estimate, half the memory
-    std::mt19937 random(1);
-    for (Slot s : free_slots()) {
-      const Slot_kind k = kind(s);
-      if (k != Slot_kind::CORNER && k != Slot_kind::STAR)
-        x[s] = (random() & 1) ? 1.0f : -1.0f;
+    if constexpr (std::is_same_v<Value, double>) {
+      return m_amplification;
+    } else {
+      std::vector<float> x(m_values.size(), 0.0f); // float: an estimate, half the memory
+      return amplification_in(x);
     }
-    double largest = 0;
-    for_each_rule_in_runs(
-        [&](const Rule& r, double& block_largest) {
-          double v = 0;
-          for (int i = 0; i < r.size(); ++i)
-            v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
-          x[r.target] = static_cast<float>(v);
-          block_largest = (std::max)(block_largest, std::abs(v));
-        },
-        largest);
-    for (Slot s : free_slots())
-      largest = (std::max)(largest, double(std::abs(x[s])));
-    return largest;
   }
   /// returns how often the plan was built: 1, plus one rebuild per round of dependency
   /// cycles broken (a thin re-routing makes corner-inner points at one end depend on those
@@ -836,6 +825,30 @@ private:
       f(i, blocks[i / internal::parallel_block]);
     });
     merge_weights(blocks);
+  }
+
+  // propagation_amplification() with x (zero, one entry per slot) as the values.
+  template <class Number>
+  double amplification_in(std::vector<Number>& x) const {
+    std::mt19937 random(1);
+    for (Slot s : free_slots()) {
+      const Slot_kind k = kind(s);
+      if (k != Slot_kind::CORNER && k != Slot_kind::STAR)
+        x[s] = (random() & 1) ? Number(1) : Number(-1);
+    }
+    double largest = 0;
+    for_each_rule_in_runs(
+        [&](const Rule& r, double& block_largest) {
+          double v = 0;
+          for (int i = 0; i < r.size(); ++i)
+            v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
+          x[r.target] = static_cast<Number>(v);
+          block_largest = (std::max)(block_largest, std::abs(v));
+        },
+        largest);
+    for (Slot s : free_slots())
+      largest = (std::max)(largest, double(std::abs(x[s])));
+    return largest;
   }
 
   // Calls f(rule, block_max) for every rule, in evaluation order except that the implicit
@@ -1248,6 +1261,10 @@ private:
     m_explicit_rules.shrink_to_fit();
     m_frames.shrink_to_fit();
     m_values.assign(m_free.size(), zero());
+    if constexpr (std::is_same_v<Value, double>) {
+      m_amplification = amplification_in(m_values);
+      std::fill(m_values.begin(), m_values.end(), zero());
+    }
     m_number_of_free = m_free.size() - std::size_t(std::count(m_free.begin(), m_free.end(), 0));
   }
 
@@ -2002,7 +2019,8 @@ private:
   Degenerate_frame_analysis<Index> m_degenerate;
   std::vector<Degenerate_frame> m_frames;
   double m_max_weight = 0;
-  std::array<double, 6> m_max_weight_by_kind{};       // by Slot_kind of the target
+  double m_amplification = 0;                   // propagation_amplification() of a plan of doubles
+  std::array<double, 6> m_max_weight_by_kind{}; // by Slot_kind of the target
   std::array<std::size_t, 6> m_above_bound_by_kind{}; // rules above the bound, by kind
   int m_plan_rounds = 0; // plan builds: 1 + the rebuilds that broke dependency cycles
   std::vector<Index> m_near_singular;
