@@ -28,11 +28,13 @@ namespace Triangular_spline {
 /*!
   \ingroup PkgTriangularSplineContinuity
   \brief the named parameters of `certify_continuity()`: `residual_tolerance(double)`,
-  `join_conditions(Join_conditions)` and `edge_verdicts(bool)`, each as `f(value)` (starts a pack)
-  or `f(value, np)` (appends to `np`), e.g. \code namespace TSP =
-  CGAL::Triangular_spline::parameters; certify_continuity(spline, 1,
-  TSP::residual_tolerance(1e-10)); certify_continuity(network, 2,
-  TSP::join_conditions(Join_conditions::LAI)); \endcode
+  `join_conditions(Join_conditions)` and `edge_verdicts(bool)`, each as `f(value)` (starts a
+  pack) or `f(value, np)` (appends to `np`), e.g.
+  \code
+  namespace TSP = CGAL::Triangular_spline::parameters;
+  certify_continuity(spline, 1, TSP::residual_tolerance(1e-10));
+  certify_continuity(network, 2, TSP::join_conditions(Join_conditions::LAI));
+  \endcode
 */
 namespace parameters {
 #ifndef DOXYGEN_RUNNING // documented in the namespace and in certify_continuity()

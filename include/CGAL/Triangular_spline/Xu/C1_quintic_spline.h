@@ -444,9 +444,9 @@ public:
   /// With `double` values it is computed with the plan, in the control values' storage
   /// before they are set (a copy would be the largest allocation of a `tspline c1` run: 200
   /// MB at \f$10^6\f$ points); other value types compute it in `float` on a copy. A single
-  /// weight need not amplify: weights that combine
-  /// points whose deviations cancel do not (the closing link of a vertex 1e-8 degrees from
-  /// singular, solved alone, had weights of 1e10 and this estimate 4). Corner regions are
+  /// weight need not amplify: weights that combine points whose deviations cancel do not
+  /// (the closing link of a vertex 1e-8 degrees from singular, solved alone, had weights of
+  /// 1e10 and this estimate 4). Corner regions are
   /// left out because any three values are one plane: their weights extrapolate a tangent
   /// plane, they cannot amplify an inconsistency. With every weight at most the bound the
   /// estimate stays below about twice the bound (a rule's weights sum to one).
