@@ -528,6 +528,9 @@ Json run(const C1_job& job, std::ostream& out) {
     report["max_propagation_weight_by_role"] = kinds;
     report["rules_above_weight_bound_by_role"] = counts;
     report["near_singular_vertices"] = spline.near_singular_vertices().size();
+    // 1, or 2 and more where thin re-routings closed a dependency cycle and the plan was
+    // built again without the least thin one on each
+    report["plan_rounds"] = spline.plan_rounds();
   }
   Json moved = Json::array();
   for (const auto& m : moves) {

@@ -32,7 +32,6 @@
 #include <string>
 #include <utility>
 #include <random>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -1236,6 +1235,13 @@ private:
     // other end; chains of such ends could close a cycle. Then the least thin re-routing on
     // each cycle is dropped and the plan rebuilt (exact degenerate ones never depend on edge
     // points, so this ends).
+    // The corner regions' frames do not depend on the re-routings: chosen once for all
+    // rounds (in double, where they are chosen apart from the rules; at 10^6 random points
+    // a second round is the rule rather than the exception).
+    std::vector<std::array<std::uint32_t, 3>> frames;
+    Weight_statistics corner_weights;
+    if constexpr (parallel_plan)
+      choose_frames(frames, corner_weights);
     for (;;) {
       ++m_plan_rounds;
       m_rule_refs.clear();
@@ -1248,10 +1254,12 @@ private:
       // and copied all control values: 200 MB at 10^6 points).
       m_free.assign(m_control_slots, 0);
       std::vector<Index> thin_edge_of_rule;
-      build_plan_once(allow_thin, thin_edge_of_rule);
+      merge_weights({corner_weights});
+      build_plan_once(frames, allow_thin, thin_edge_of_rule);
       if (order_rules(thin_edge_of_rule, allow_thin))
         break;
     }
+    internal::release(frames);
     if (m_free.size() >= explicit_rule_bit)
       throw Invalid_input("spline: domain too large: more than 2^31 slots");
     // Appended to (auxiliary slots, stored rules, re-routed frames): a doubled capacity
@@ -1268,7 +1276,47 @@ private:
     m_number_of_free = m_free.size() - std::size_t(std::count(m_free.begin(), m_free.end(), 0));
   }
 
-  void build_plan_once(const std::vector<char>& allow_thin, std::vector<Index>& thin_edge_of_rule) {
+  Slot region_slot(Index v, std::size_t k) const {
+    return k == 0 ? vertex_slot(v) : star_slot(m_domain.star_edges(v).first[k - 1], v);
+  }
+  const Point_2& region_point(Index v, std::size_t k) const {
+    return k == 0 ? m_domain.point(v) : m_domain.point(m_domain.neighbours(v).first[k - 1]);
+  }
+
+  // The frame of every corner region (choose_frame()) on all cores, and in `weights` the
+  // statistics of the corner regions' rules.
+  void choose_frames(std::vector<std::array<std::uint32_t, 3>>& frames,
+                     Weight_statistics& weights) {
+    const std::size_t V = m_domain.number_of_vertices();
+    frames.resize(V);
+    std::vector<Weight_statistics> blocks((V + internal::parallel_block - 1) /
+                                          internal::parallel_block);
+    internal::parallel_for_index(V, internal::thread_count(V, 20000), [&](std::size_t i) {
+      Weight_statistics& w = blocks[i / internal::parallel_block];
+      const Index v = static_cast<Index>(i);
+      const std::array<std::size_t, 3> frame = choose_frame(v);
+      frames[i] = {{std::uint32_t(frame[0]), std::uint32_t(frame[1]), std::uint32_t(frame[2])}};
+      const Point_2 &a = region_point(v, frame[0]), &b = region_point(v, frame[1]),
+                    &c = region_point(v, frame[2]);
+      const std::size_t size = 1 + m_domain.degree(v);
+      for (std::size_t k = 0; k < size; ++k)
+        if (k != frame[0] && k != frame[1] && k != frame[2])
+          count_weight(w, region_slot(v, k), largest_abs(barycentric(region_point(v, k), a, b, c)));
+    });
+    weights = {};
+    for (const Weight_statistics& w : blocks) {
+      weights.largest = (std::max)(weights.largest, w.largest);
+      for (std::size_t k = 0; k < 6; ++k) {
+        weights.by_kind[k] = (std::max)(weights.by_kind[k], w.by_kind[k]);
+        weights.above[k] += w.above[k];
+      }
+    }
+  }
+
+  // One round of the plan; `frames` the corner regions' frames where they were chosen
+  // apart (choose_frames(), in double), empty otherwise.
+  void build_plan_once(const std::vector<std::array<std::uint32_t, 3>>& frames,
+                       const std::vector<char>& allow_thin, std::vector<Index>& thin_edge_of_rule) {
     const Index V = static_cast<Index>(m_domain.number_of_vertices());
     const Index E = static_cast<Index>(m_domain.number_of_edges());
     const Index F = static_cast<Index>(m_domain.number_of_faces());
@@ -1278,28 +1326,6 @@ private:
     // 1. Corner regions (Lemma 3.3.2): every point of the region is the affine image of its
     // domain point under the map fixed by the three prescribed points.
     // (In double the frames, and their rules' weights for the statistics, on all cores.)
-    auto region_slot = [&](Index v, std::size_t k) {
-      return k == 0 ? vertex_slot(v) : star_slot(m_domain.star_edges(v).first[k - 1], v);
-    };
-    auto region_point = [&](Index v, std::size_t k) -> const Point_2& {
-      return k == 0 ? m_domain.point(v) : m_domain.point(m_domain.neighbours(v).first[k - 1]);
-    };
-    std::vector<std::array<std::uint32_t, 3>> frames;
-    if constexpr (parallel_plan) {
-      frames.resize(V);
-      parallel_with_weights(V, [&](std::size_t i, Weight_statistics& w) {
-        const Index v = static_cast<Index>(i);
-        const std::array<std::size_t, 3> frame = choose_frame(v);
-        frames[i] = {{std::uint32_t(frame[0]), std::uint32_t(frame[1]), std::uint32_t(frame[2])}};
-        const Point_2 &a = region_point(v, frame[0]), &b = region_point(v, frame[1]),
-                      &c = region_point(v, frame[2]);
-        const std::size_t size = 1 + m_domain.degree(v);
-        for (std::size_t k = 0; k < size; ++k)
-          if (k != frame[0] && k != frame[1] && k != frame[2])
-            count_weight(w, region_slot(v, k),
-                         largest_abs(barycentric(region_point(v, k), a, b, c)));
-      });
-    }
     for (Index v = 0; v < V; ++v) {
       const std::size_t size = 1 + m_domain.degree(v);
       std::array<std::size_t, 3> frame;
@@ -1323,7 +1349,6 @@ private:
                    true);
       }
     }
-    internal::release(frames);
     thin_edge_of_rule.assign(m_rule_refs.size(), Domain::null_index);
 
     std::vector<Edge_route> routes = route_edges(allow_thin);
@@ -1892,44 +1917,100 @@ private:
       ready[s] = m_free[s];
     std::vector<unsigned char> state(R, 0); // 0 deferred, 1 on the stack, 2 done
     std::vector<std::uint32_t> deferred;
-    for (std::size_t i = 0; i < R; ++i) {
+    // whether rule i stays; if so its target is ready
+    auto keep = [&](std::size_t i) {
       const Rule rule = sources_of(i);
-      bool sources_ready = true;
       for (int j = 0; j < rule.size(); ++j)
-        sources_ready = sources_ready && ready[rule.sources[std::size_t(j)]];
-      if (sources_ready) {
-        ready[rule.target] = 1;
-        state[i] = 2;
-      } else {
-        deferred.push_back(static_cast<std::uint32_t>(i));
+        if (!ready[rule.sources[std::size_t(j)]])
+          return false;
+      ready[rule.target] = 1;
+      state[i] = 2;
+      return true;
+    };
+    // In double, a run of implicit rules of one kind on all cores: none reads another's
+    // target (for_each_rule_in_runs()), so each sees what it would in order, and the
+    // deferred ones are collected block by block in order: the same list as one thread's.
+    constexpr std::size_t block = 4096;
+    std::vector<std::vector<std::uint32_t>> deferred_in_block;
+    for (std::size_t begin = 0; begin < R;) {
+      const std::uint32_t first = m_rule_refs[begin];
+      std::size_t end = begin + 1;
+      if (parallel_plan && !(first & explicit_rule_bit)) {
+        const int group = implicit_group(first);
+        while (end < R && !(m_rule_refs[end] & explicit_rule_bit) &&
+               implicit_group(m_rule_refs[end]) == group)
+          ++end;
       }
+      if (end - begin < 2 * block) {
+        for (std::size_t i = begin; i < end; ++i)
+          if (!keep(i))
+            deferred.push_back(static_cast<std::uint32_t>(i));
+      } else {
+        const std::size_t blocks = (end - begin + block - 1) / block;
+        deferred_in_block.assign(blocks, {});
+        internal::parallel_for_index(
+            blocks, internal::thread_count(end - begin, 20000),
+            [&](std::size_t b) {
+              const std::size_t last = (std::min)(end, begin + (b + 1) * block);
+              for (std::size_t i = begin + b * block; i < last; ++i)
+                if (!keep(i))
+                  deferred_in_block[b].push_back(static_cast<std::uint32_t>(i));
+            },
+            1);
+        for (const auto& d : deferred_in_block)
+          deferred.insert(deferred.end(), d.begin(), d.end());
+      }
+      begin = end;
     }
     if (deferred.empty())
       return true;
     // 2. Depth-first over the deferred rules (the kept ones are done): their order after
-    // the kept rules, or a dependency cycle.
-    std::unordered_map<Slot, std::uint32_t> rule_of;
-    rule_of.reserve(deferred.size());
-    for (std::uint32_t i : deferred)
-      rule_of.emplace(sources_of(i).target, i);
+    // the kept rules, or a dependency cycle. The deferred rules by target in an open-addressing
+    // table (Fibonacci hashing, at most half full): a lookup is one or two reads of one array
+    // (std::unordered_map took 0.7 s of the 1.5 s this step took at 10^6 random points, two
+    // plan rounds). Every slot the search looks up is the target of a deferred rule: a slot
+    // that is not ready is neither free nor computed by a kept rule.
+    int shift = 32;
+    while ((std::size_t(1) << (32 - shift)) < 2 * deferred.size())
+      --shift;
+    const std::size_t mask = (std::size_t(1) << (32 - shift)) - 1;
+    std::vector<std::pair<Slot, std::uint32_t>> rule_of(mask + 1, {null_slot, none});
+    auto cell_of = [&](Slot target) {
+      std::size_t c = std::size_t(std::uint32_t(target * 2654435769u) >> shift);
+      while (rule_of[c].first != null_slot && rule_of[c].first != target)
+        c = (c + 1) & mask;
+      return c;
+    };
+    for (std::uint32_t i : deferred) {
+      const Slot target = sources_of(i).target;
+      rule_of[cell_of(target)] = {target, i};
+    }
     std::vector<std::uint32_t> order;
     order.reserve(deferred.size());
-    std::vector<std::pair<std::uint32_t, int>> stack; // rule, next source to visit
+    // rule, next source to visit, its sources (computed once per visit, not once per step)
+    struct Visit {
+      std::uint32_t rule;
+      int next, size;
+      std::array<Slot, 3> sources;
+    };
+    std::vector<Visit> stack;
+    auto visit = [&](std::uint32_t i) {
+      const Rule r = sources_of(i);
+      stack.push_back({i, 0, r.size(), r.sources});
+    };
     bool cycle = false;
     for (std::uint32_t root : deferred) {
       if (state[root])
         continue;
-      stack.push_back({root, 0});
+      visit(root);
       state[root] = 1;
       while (!stack.empty()) {
-        auto& [rule, next] = stack.back();
-        const Rule sources = sources_of(rule);
-        if (next < sources.size()) {
-          const Slot slot = sources.sources[std::size_t(next++)];
+        Visit& top = stack.back();
+        if (top.next < top.size) {
+          const Slot slot = top.sources[std::size_t(top.next++)];
           if (ready[slot]) // free, or computed by a kept rule: no lookup
             continue;
-          const auto found = rule_of.find(slot);
-          const std::uint32_t source = found == rule_of.end() ? none : found->second;
+          const std::uint32_t source = rule_of[cell_of(slot)].second;
           if (source == none || state[source] == 2)
             continue;
           if (state[source] == 1) {
@@ -1937,7 +2018,7 @@ private:
             Index least = Domain::null_index;
             double least_weight = std::numeric_limits<double>::infinity();
             for (std::size_t i = stack.size(); i-- > 0;) {
-              const Index e = thin_edge_of_rule[stack[i].first];
+              const Index e = thin_edge_of_rule[stack[i].rule];
               if (e != Domain::null_index) {
                 const double w = regular_weight(e);
                 if (w < least_weight) {
@@ -1945,7 +2026,7 @@ private:
                   least = e;
                 }
               }
-              if (stack[i].first == source)
+              if (stack[i].rule == source)
                 break;
             }
             CGAL_assertion(least != Domain::null_index); // only thin links close cycles
@@ -1954,11 +2035,11 @@ private:
             continue;
           }
           state[source] = 1;
-          stack.push_back({source, 0});
+          visit(source); // invalidates `top`
           continue;
         }
-        state[rule] = 2;
-        order.push_back(rule);
+        state[top.rule] = 2;
+        order.push_back(top.rule);
         stack.pop_back();
       }
     }
