@@ -447,6 +447,7 @@ public:
       d["max_propagation_weight"] = m_network->max_propagation_weight();
       d["propagation_amplification"] = m_network->propagation_amplification();
       d["near_singular_vertices"] = m_network->near_singular_vertices().size();
+      d["plan_rounds"] = m_network->plan_rounds();
       if (m_settings.y_exponent != 0)
         d["rescale_y_factor"] = std::ldexp(1.0, m_settings.y_exponent);
     }

@@ -118,6 +118,7 @@ def test_properties(scattered):
     # random signs on the free points outside the corner regions stay near a sign's size
     assert 1 <= i["propagation_amplification"] <= 2 * 16 + 1
     assert i["near_singular_vertices"] >= 0
+    assert i["plan_rounds"] in (1, 2)  # 2: a dependency cycle of thin re-routings was broken
     # 3V + 3F + E_I + 3E_B + sigma, Morgan-Scott's dimension on a generic triangulation
     d = f.dimension()
     assert f.free_parameters == d["free_parameters"] == d["upper_bound"] == d["lower_bound"]

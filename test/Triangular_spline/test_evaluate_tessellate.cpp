@@ -487,7 +487,7 @@ TEST(Plan, OnAllCoresIsTheOneThreadPlan) {
 // are chosen once for all rounds, and the ordering's first pass runs in runs of one kind on
 // all cores: the plan must still be a propagation order, count every rule's weight once, and
 // be the one-thread plan. (About one set of 2 10^5 random points in six needs two rounds;
-// 10^6 random points always did.)
+// both sets of 10^6 points measured did.)
 TEST(Plan, RebuiltAfterADependencyCycleIsAnOrderAndTheOneThreadPlan) {
   using Spline = TS::C1_quintic_spline<Epick>;
   const auto domain_of = [](unsigned seed, int n) {

@@ -1236,8 +1236,8 @@ private:
     // each cycle is dropped and the plan rebuilt (exact degenerate ones never depend on edge
     // points, so this ends).
     // The corner regions' frames do not depend on the re-routings: chosen once for all
-    // rounds (in double, where they are chosen apart from the rules; at 10^6 random points
-    // a second round is the rule rather than the exception).
+    // rounds (in double, where they are chosen apart from the rules; both sets of 10^6
+    // points measured needed a second round).
     std::vector<std::array<std::uint32_t, 3>> frames;
     Weight_statistics corner_weights;
     if constexpr (parallel_plan)
