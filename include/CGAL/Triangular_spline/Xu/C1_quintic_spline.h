@@ -805,14 +805,21 @@ private:
     w.by_kind[k] = (std::max)(w.by_kind[k], largest);
     w.above[k] += largest > propagation_weight_bound ? 1 : 0;
   }
-  void merge_weights(const std::vector<Weight_statistics>& blocks) {
+  static void add_weights(Weight_statistics& into, const std::vector<Weight_statistics>& blocks) {
     for (const Weight_statistics& w : blocks) {
-      m_max_weight = (std::max)(m_max_weight, w.largest);
+      into.largest = (std::max)(into.largest, w.largest);
       for (std::size_t k = 0; k < 6; ++k) {
-        m_max_weight_by_kind[k] = (std::max)(m_max_weight_by_kind[k], w.by_kind[k]);
-        m_above_bound_by_kind[k] += w.above[k];
+        into.by_kind[k] = (std::max)(into.by_kind[k], w.by_kind[k]);
+        into.above[k] += w.above[k];
       }
     }
+  }
+  void merge_weights(const std::vector<Weight_statistics>& blocks) {
+    Weight_statistics total{m_max_weight, m_max_weight_by_kind, m_above_bound_by_kind};
+    add_weights(total, blocks);
+    m_max_weight = total.largest;
+    m_max_weight_by_kind = total.by_kind;
+    m_above_bound_by_kind = total.above;
   }
   // Runs f(i, statistics of i's block) for i in [0, n) on all cores, then merges the
   // statistics.
@@ -1304,13 +1311,7 @@ private:
           count_weight(w, region_slot(v, k), largest_abs(barycentric(region_point(v, k), a, b, c)));
     });
     weights = {};
-    for (const Weight_statistics& w : blocks) {
-      weights.largest = (std::max)(weights.largest, w.largest);
-      for (std::size_t k = 0; k < 6; ++k) {
-        weights.by_kind[k] = (std::max)(weights.by_kind[k], w.by_kind[k]);
-        weights.above[k] += w.above[k];
-      }
-    }
+    add_weights(weights, blocks);
   }
 
   // One round of the plan; `frames` the corner regions' frames where they were chosen
