@@ -333,11 +333,12 @@ Json run(const C1_job& job, std::ostream& out) {
   // too thin for double falls back to its exact form.
   double thin_plate = 0;
   double sampled_min = data_min, sampled_max = data_max;
-  // Per face on all cores (double builds), summed in face order: the same sum as one thread.
+  // Per face on all cores, summed in face order: the same sum as one thread.
   std::vector<double> face_energy(d.number_of_faces()), face_value(d.number_of_faces());
   const bool exact_build = CGAL::Algebraic_structure_traits<typename K::FT>::Is_exact::value;
   TS::internal::parallel_for_index(
-      d.number_of_faces(), exact_build ? 1 : TS::internal::thread_count(d.number_of_faces(), 20000),
+      d.number_of_faces(),
+      TS::internal::thread_count(d.number_of_faces(), exact_build ? 2000 : 20000),
       [&](std::size_t face) {
         const auto f = static_cast<std::uint32_t>(face);
         double energy = 0, z = 0;
@@ -375,11 +376,28 @@ Json run(const C1_job& job, std::ostream& out) {
     sampled_min = (std::min)(sampled_min, face_value[f]);
     sampled_max = (std::max)(sampled_max, face_value[f]);
   }
+  // (by blocks on all cores: an exact value's conversion to double is not cheap)
   double control_min = HUGE_VAL, control_max = -HUGE_VAL;
-  for (std::size_t s = 0; s < spline.number_of_slots(); ++s) {
-    const auto& value = spline.values()[s];
-    control_min = (std::min)(control_min, CGAL::to_double(value));
-    control_max = (std::max)(control_max, CGAL::to_double(value));
+  {
+    constexpr std::size_t block = std::size_t(1) << 14;
+    const std::size_t slots = spline.number_of_slots();
+    std::vector<std::pair<double, double>> ranges((slots + block - 1) / block,
+                                                  {HUGE_VAL, -HUGE_VAL});
+    TS::internal::parallel_for_index(
+        ranges.size(), TS::internal::thread_count(slots, exact_build ? 20000 : 1000000),
+        [&](std::size_t b) {
+          auto& [low, high] = ranges[b];
+          for (std::size_t s = b * block; s < (std::min)(slots, (b + 1) * block); ++s) {
+            const double value = CGAL::to_double(spline.values()[s]);
+            low = (std::min)(low, value);
+            high = (std::max)(high, value);
+          }
+        },
+        1);
+    for (const auto& [low, high] : ranges) {
+      control_min = (std::min)(control_min, low);
+      control_max = (std::max)(control_max, high);
+    }
   }
   const double data_span = data_max - data_min;
   const double overshoot = (std::max)(sampled_max - data_max, data_min - sampled_min);

@@ -488,6 +488,31 @@ TEST(Plan, OnAllCoresIsTheOneThreadPlan) {
 // all cores: the plan must still be a propagation order, count every rule's weight once, and
 // be the one-thread plan. (About one set of 2 10^5 random points in six needs two rounds;
 // both sets of 10^6 points measured did.)
+// An exact plan stores every rule; from 20000 rules propagation_amplification() runs them
+// depth by depth on all cores, and gives the one-thread estimate (plan order) bit for bit.
+TEST(Plan, ExactAmplificationOnAllCoresIsTheOneThreadEstimate) {
+  using K = Exact_kernel;
+  using FT = K::FT;
+  std::mt19937 random(19);
+  std::uniform_int_distribution<int> coordinate(0, 1000000);
+  Delaunay<K> dt;
+  for (int i = 0; i < 3500; ++i) {
+    const FT x = FT(coordinate(random)) / 1000000;
+    dt.insert(K::Point_2(x, FT(coordinate(random)) / 1000000));
+  }
+  std::vector<Delaunay<K>::Vertex_handle> handles;
+  const auto domain = TS::domain_from_triangulation_2<K>(
+      dt, [](Delaunay<K>::Face_handle) { return true; }, handles);
+  const TS::C1_quintic_spline<K> spline(domain);
+  ASSERT_GT(spline.number_of_rules(), 40000u);
+  const double all = spline.propagation_amplification();
+  TS::internal::thread_limit() = 1;
+  const double one = spline.propagation_amplification();
+  TS::internal::thread_limit() = 0;
+  EXPECT_EQ(all, one);
+  EXPECT_GE(all, 1.0); // the free signs are +-1 and pass into the rules' targets
+}
+
 TEST(Plan, RebuiltAfterADependencyCycleIsAnOrderAndTheOneThreadPlan) {
   using Spline = TS::C1_quintic_spline<Epick>;
   const auto domain_of = [](unsigned seed, int n) {

@@ -12,7 +12,9 @@
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
 #include <CGAL/Triangular_spline/IO/scattered_data.h>
 #include <CGAL/Triangular_spline/IO/spline_file.h>
+#include <CGAL/Triangular_spline/internal/parallel.h>
 
+#include <CGAL/Gmpq.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
@@ -225,6 +227,34 @@ TEST(NumberParsing, FormatRoundTrips) {
     EXPECT_EQ(TS::parse_number<double>(TS::format_number(d)), d);
   }
   EXPECT_EQ(TS::parse_number<double>(TS::format_number(5e-324)), 5e-324);
+}
+
+TEST(NumberParsing, GmpRationalsAreWrittenAsTheGenericFractions) {
+  // GMP's C++ rationals are written straight from their parts; CGAL::Gmpq goes through
+  // Fraction_traits and a string stream. Both give the same text, for numbers of many limbs
+  // and every sign.
+  static_assert(TS::internal::Is_gmpxx_rational<mpq_class>::value);
+  static_assert(!TS::internal::Is_gmpxx_rational<CGAL::Gmpq>::value);
+  static_assert(!TS::internal::Is_gmpxx_rational<double>::value);
+  Random_rationals random(11);
+  for (int i = 0; i < 300; ++i) {
+    mpq_class q = random.rational<mpq_class>(1000000007, 999983);
+    for (int k = 0; k < i % 7; ++k)
+      q *= random.rational<mpq_class>(2147483647, 2147483629) + mpq_class(1, 3);
+    if (i % 3 == 0)
+      q = -q;
+    if (i % 50 == 0)
+      q = i % 100 == 0 ? mpq_class(0) : mpq_class(-123456789);
+    const std::string text = TS::format_number(q);
+    EXPECT_EQ(text, TS::format_number(CGAL::Gmpq(q.get_mpq_t()))) << i;
+    EXPECT_EQ(TS::parse_number<mpq_class>(text), q) << text;
+  }
+  mpq_class third(-7, 21), three(12, 4); // as constructed, not reduced
+  EXPECT_EQ(TS::format_number(three), TS::format_number(CGAL::Gmpq(three.get_mpq_t())));
+  third.canonicalize(); // arithmetic keeps them reduced
+  three.canonicalize();
+  EXPECT_EQ(TS::format_number(third), "-1/3");
+  EXPECT_EQ(TS::format_number(three), "3");
 }
 
 TEST(NumberParsing, NearestDoubleRoundsCorrectly) {
@@ -813,6 +843,36 @@ TYPED_TEST(SplineFile, WriterChecksPatches) {
 // The writer formats the patches on all cores, 64 blocks of 1024 faces at a time: a network
 // of more than one batch must give the text of a plain serial loop, and the first bad face's
 // error wherever the bad faces sit.
+// The text a serial writer gives: `text`'s header, vertex and face lines, then each patch's
+// numbers as format_number() writes them.
+template <class Patches>
+std::string serial_spline_text(const std::string& text, const Patches& patches) {
+  const std::size_t start = text.find("patches\n");
+  if (start == std::string::npos)
+    return "no patches line";
+  std::string serial = text.substr(0, start) + "patches\n";
+  for (const auto& patch : patches) {
+    for (std::size_t i = 0; i < patch.control_points().size(); ++i)
+      serial += (i ? " " : "") + TS::format_number(patch.control_points()[i]);
+    serial += "\n";
+  }
+  return serial + "end\n";
+}
+
+// Patches `first` and `later` get vertices their faces do not list in that order (two
+// vertices swapped): the writer names `first`, whichever thread met `later` before.
+template <class K, class Patches>
+void expect_first_bad_face_named(const TS::Planar_domain<K>& domain, Patches patches,
+                                 std::size_t first, std::size_t later) {
+  std::swap(patches[later], patches[later + 1]);
+  std::swap(patches[first], patches[first + 3]);
+  std::ostringstream bad;
+  const std::string face = std::to_string(first);
+  EXPECT_TRUE(
+      throws_with([&] { TS::write_spline_file(bad, TS::Patch_network<K>(domain, patches)); },
+                  {"patch " + face + " vertex", "is not a vertex of face " + face}));
+}
+
 TEST(SplineFile, ParallelWriterGivesTheSerialText) {
   using K = Epick;
   TS::Scattered_data<K> data;
@@ -827,27 +887,40 @@ TEST(SplineFile, ParallelWriterGivesTheSerialText) {
   auto patches = random_patches<K, double>(domain, 5, 3);
   std::ostringstream out;
   TS::write_spline_file(out, TS::Patch_network<K>(domain, patches));
-  // The serial text: the same header, vertex and face lines, then the patches.
   const std::string text = out.str();
-  const std::size_t start = text.find("patches\n");
-  ASSERT_NE(start, std::string::npos);
-  std::string serial = text.substr(0, start) + "patches\n";
-  for (const auto& patch : patches) {
-    for (std::size_t i = 0; i < patch.control_points().size(); ++i)
-      serial += (i ? " " : "") + TS::format_number(patch.control_points()[i]);
-    serial += "\n";
-  }
-  serial += "end\n";
-  EXPECT_TRUE(text == serial);
+  EXPECT_TRUE(text == serial_spline_text(text, patches));
   std::istringstream in(text);
   expect_same_spline(domain, patches, TS::read_spline_file<K>(in, "large.spline"));
   // bad faces in both batches, the later one first in the thread order
-  std::swap(patches[70001], patches[70002]);
-  std::swap(patches[40000], patches[40003]);
-  std::ostringstream bad;
-  EXPECT_TRUE(
-      throws_with([&] { TS::write_spline_file(bad, TS::Patch_network<K>(domain, patches)); },
-                  {"patch 40000 vertex", "is not a vertex of face 40000"}));
+  expect_first_bad_face_named(domain, patches, 40000, 70001);
+}
+
+TEST(SplineFile, ExactWriterOnAllCoresGivesTheOneThreadText) {
+  // Exact networks are formatted on all cores too, in batches of 4096 faces: the text of one
+  // thread, the patches' numbers as format_number() writes them; the first bad face's error.
+  using K = Exact_kernel;
+  TS::Scattered_data<K> data;
+  std::mt19937_64 random(8);
+  std::uniform_int_distribution<int> coordinate(0, 1000000);
+  for (int i = 0; i < 2600; ++i) {
+    const K::FT x = K::FT(coordinate(random)) / 1000000; // reduced, as arithmetic keeps them
+    data.points.emplace_back(x, K::FT(coordinate(random)) / 1000000);
+    data.values.push_back(0);
+  }
+  const TS::Planar_domain<K> domain = TS::delaunay_domain(data).first;
+  ASSERT_GT(domain.number_of_faces(), 4096u); // two batches
+  auto patches = random_patches<K, K::FT>(domain, 5, 4);
+  std::ostringstream all, one;
+  TS::write_spline_file(all, TS::Patch_network<K>(domain, patches));
+  TS::internal::thread_limit() = 1;
+  TS::write_spline_file(one, TS::Patch_network<K>(domain, patches));
+  TS::internal::thread_limit() = 0;
+  const std::string text = all.str();
+  EXPECT_TRUE(text == one.str());
+  EXPECT_TRUE(text == serial_spline_text(text, patches));
+  std::istringstream in(text);
+  expect_same_spline(domain, patches, TS::read_spline_file<K>(in, "exact.spline"));
+  expect_first_bad_face_named(domain, patches, 2000, 4500);
 }
 
 TEST(SplineFileConversion, NumberTypesConvertAsDocumented) {

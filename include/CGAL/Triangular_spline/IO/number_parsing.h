@@ -13,6 +13,11 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/number_utils.h>
 
+#if __has_include(<gmp.h>)
+#include <gmp.h>
+#define CGAL_TRIANGULAR_SPLINE_HAS_GMP_H 1
+#endif
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -58,6 +63,46 @@ FT parse_number(const std::string& token) {
     return FT(internal::parse_double(token));
 }
 
+namespace internal {
+// Whether FT is GMP's C++ rational (mpq_class, CGAL::Exact_rational with GMPXX).
+template <class FT, class = void>
+struct Is_gmpxx_rational : std::false_type {};
+#ifdef CGAL_TRIANGULAR_SPLINE_HAS_GMP_H
+template <class FT>
+struct Is_gmpxx_rational<
+    FT,
+    std::enable_if_t<std::is_same_v<decltype(std::declval<const FT&>().get_mpq_t()), mpq_srcptr>>>
+    : std::true_type {};
+
+// appends the decimal digits of z (with its sign)
+inline void append_mpz(std::string& out, mpz_srcptr z) {
+  const std::size_t at = out.size();
+  out.resize(at + mpz_sizeinbase(z, 10) + 2); // the size may be one too large, and a sign
+  mpz_get_str(out.data() + at, 10, z);
+  out.resize(at + std::strlen(out.data() + at));
+}
+#endif
+
+// format_number() of GMP's rationals, which are kept reduced: their parts are written
+// straight from GMP (the decomposition's copies and a string stream were most of the time
+// of saving an exact spline).
+template <class FT>
+std::string format_gmpxx_rational(const FT& x) {
+  std::string out;
+#ifdef CGAL_TRIANGULAR_SPLINE_HAS_GMP_H
+  const mpq_srcptr q = x.get_mpq_t();
+  append_mpz(out, mpq_numref(q));
+  if (mpz_cmp_ui(mpq_denref(q), 1) != 0) {
+    out += '/';
+    append_mpz(out, mpq_denref(q));
+  }
+#else
+  CGAL_USE(x);
+#endif
+  return out;
+}
+} // namespace internal
+
 /*!
   \ingroup PkgTriangularSplineIO
   \brief formats `x` as a token that `parse_number<FT>()` reads back to the same value.
@@ -72,7 +117,9 @@ FT parse_number(const std::string& token) {
 */
 template <class FT>
 std::string format_number(const FT& x) {
-  if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
+  if constexpr (internal::Is_gmpxx_rational<FT>::value) {
+    return internal::format_gmpxx_rational(x);
+  } else if constexpr (CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
     using Traits = CGAL::Fraction_traits<FT>;
     static_assert(std::is_same<typename Traits::Is_fraction, CGAL::Tag_true>::value,
                   "format_number needs an exact number type that is a fraction");

@@ -112,31 +112,33 @@ void write_spline_file(std::ostream& output, const TriangularSplineNetwork& netw
   const int m = F == 0 ? 0 : network.patch(0).degree();
   constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
   // The patch's vertex order, as domain vertex indices (exact point comparison), checked on
-  // all cores for double networks (the error of the first bad face, as a serial loop).
+  // all cores (the error of the first bad face, as a serial loop).
   std::vector<std::array<Index, 3>> ordered(F);
-  internal::parallel_for_index(F, exact ? 1 : internal::thread_count(F, 20000), [&](std::size_t f) {
-    // binds to a stored patch, or extends the life of a computed one
-    const Patch& patch = network.patch(static_cast<Index>(f));
-    if (patch.degree() != m)
-      throw Invalid_input("write_spline_file: patch " + std::to_string(f) + " has degree " +
-                          std::to_string(patch.degree()) + ", patch 0 has degree " +
-                          std::to_string(m));
-    const std::array<Index, 3>& face = domain.face(static_cast<Index>(f));
-    std::array<bool, 3> used{{false, false, false}};
-    for (int i = 0; i < 3; ++i) {
-      int match = -1;
-      for (int j = 0; j < 3 && match < 0; ++j)
-        if (!used[static_cast<std::size_t>(j)] &&
-            domain.point(face[static_cast<std::size_t>(j)]) == patch.vertex(i))
-          match = j;
-      if (match < 0)
-        throw Invalid_input("write_spline_file: patch " + std::to_string(f) + " vertex " +
-                            std::to_string(i) + " " + internal::point_to_string(patch.vertex(i)) +
-                            " is not a vertex of face " + std::to_string(f));
-      used[static_cast<std::size_t>(match)] = true;
-      ordered[f][static_cast<std::size_t>(i)] = face[static_cast<std::size_t>(match)];
-    }
-  });
+  internal::parallel_for_index(
+      F, internal::thread_count(F, exact ? 2000 : 20000), [&](std::size_t f) {
+        // binds to a stored patch, or extends the life of a computed one
+        const Patch& patch = network.patch(static_cast<Index>(f));
+        if (patch.degree() != m)
+          throw Invalid_input("write_spline_file: patch " + std::to_string(f) + " has degree " +
+                              std::to_string(patch.degree()) + ", patch 0 has degree " +
+                              std::to_string(m));
+        const std::array<Index, 3>& face = domain.face(static_cast<Index>(f));
+        std::array<bool, 3> used{{false, false, false}};
+        for (int i = 0; i < 3; ++i) {
+          int match = -1;
+          for (int j = 0; j < 3 && match < 0; ++j)
+            if (!used[static_cast<std::size_t>(j)] &&
+                domain.point(face[static_cast<std::size_t>(j)]) == patch.vertex(i))
+              match = j;
+          if (match < 0)
+            throw Invalid_input("write_spline_file: patch " + std::to_string(f) + " vertex " +
+                                std::to_string(i) + " " +
+                                internal::point_to_string(patch.vertex(i)) +
+                                " is not a vertex of face " + std::to_string(f));
+          used[static_cast<std::size_t>(match)] = true;
+          ordered[f][static_cast<std::size_t>(i)] = face[static_cast<std::size_t>(match)];
+        }
+      });
 
   output << internal::spline_file_magic << " " << internal::spline_file_version << "\n"
          << "# a piecewise polynomial over a planar triangulation, written by "
@@ -185,18 +187,19 @@ void write_spline_file(std::ostream& output, const TriangularSplineNetwork& netw
   }
   text += "patches\n";
   flush(true);
-  // The patches, most of the file, are formatted on all cores (double only: exact networks
-  // are small), a batch of faces at a time, each block of faces into its own buffer, and
-  // written in face order: the file does not depend on the number of threads.
+  // The patches, most of the file, are formatted on all cores, a batch of faces at a time,
+  // each block of faces into its own buffer, and written in face order: the file does not
+  // depend on the number of threads.
   constexpr std::size_t block = internal::parallel_block;
-  const std::size_t batch = 64 * block;
+  // (exact values can take kilobytes each: a smaller batch bounds the buffers)
+  const std::size_t batch = (exact ? 4 : 64) * block;
   std::vector<std::string> pieces(batch / block);
   for (std::size_t first = 0; first < F; first += batch) {
     const std::size_t count = (std::min)(batch, F - first);
     for (std::string& piece : pieces)
       piece.clear();
     internal::parallel_for_index(
-        count, exact ? 1 : internal::thread_count(count, 4 * block), [&](std::size_t i) {
+        count, internal::thread_count(count, exact ? 64 : 4 * block), [&](std::size_t i) {
           std::string& piece = pieces[i / block];
           const Patch& patch = network.patch(static_cast<Index>(first + i));
           bool first_number = true;

@@ -680,38 +680,50 @@ private:
 
   // The rules by depth (free slots have depth 0, a rule's target one more than its deepest
   // source): the plan order computes every source first, so a rule reads only slots of
-  // smaller depths, and the rules of one depth run in parallel with the values of the plan
-  // order. Exact rules cost about a tenth of a millisecond each (sums of fractions of
-  // thousands of digits from the local polynomials), so this is for exact number types.
-  void propagate_by_depth(std::size_t threads) {
+  // smaller depths, and the rules of one depth can run in parallel with the values of the
+  // plan order. The rules of depth d are order[start[d]] .. order[start[d + 1] - 1]
+  // (indices into m_rule_refs, in plan order); false, with nothing set, when a slot is
+  // computed twice (then only the plan order is right).
+  bool rules_by_depth(std::vector<std::size_t>& start, std::vector<std::uint32_t>& order) const {
     const std::size_t R = m_rule_refs.size();
     std::vector<std::uint32_t> slot_depth(m_values.size(), 0), depth(R);
     std::uint32_t deepest = 0;
     for (std::size_t i = 0; i < R; ++i) {
-      const Rule r = rule_of_ref(m_rule_refs[i], false);
-      std::uint32_t d = 0;
-      for (int j = 0; j < r.size(); ++j)
-        d = (std::max)(d, slot_depth[r.sources[std::size_t(j)]]);
-      if (slot_depth[r.target] != 0) { // a slot computed twice: keep the plan order
-        for (const std::uint32_t ref : m_rule_refs)
-          apply_ref(ref);
-        return;
-      }
-      depth[i] = slot_depth[r.target] = d + 1;
-      deepest = (std::max)(deepest, d + 1);
+      bool twice = false;
+      with_rule(m_rule_refs[i], false, [&](const Rule& r) {
+        std::uint32_t d = 0;
+        for (int j = 0; j < r.size(); ++j)
+          d = (std::max)(d, slot_depth[r.sources[std::size_t(j)]]);
+        twice = slot_depth[r.target] != 0;
+        depth[i] = slot_depth[r.target] = d + 1;
+        deepest = (std::max)(deepest, d + 1);
+      });
+      if (twice)
+        return false;
     }
-    std::vector<std::size_t> start(std::size_t(deepest) + 2, 0);
+    start.assign(std::size_t(deepest) + 2, 0);
     for (std::uint32_t d : depth)
       ++start[d + 1];
     for (std::size_t d = 1; d < start.size(); ++d)
       start[d] += start[d - 1];
-    std::vector<std::uint32_t> order(R);
-    {
-      std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-      for (std::size_t i = 0; i < R; ++i)
-        order[fill[depth[i]]++] = static_cast<std::uint32_t>(i);
+    order.resize(R);
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < R; ++i)
+      order[fill[depth[i]]++] = static_cast<std::uint32_t>(i);
+    return true;
+  }
+
+  // Exact rules cost about a tenth of a millisecond each (sums of fractions of thousands of
+  // digits from the local polynomials): propagate() runs them depth by depth on all cores.
+  void propagate_by_depth(std::size_t threads) {
+    std::vector<std::size_t> start;
+    std::vector<std::uint32_t> order;
+    if (!rules_by_depth(start, order)) {
+      for (const std::uint32_t ref : m_rule_refs)
+        apply_ref(ref);
+      return;
     }
-    for (std::uint32_t d = 1; d <= deepest; ++d)
+    for (std::size_t d = 1; d + 1 < start.size(); ++d)
       internal::parallel_for_index(
           start[d + 1] - start[d], threads,
           [&](std::size_t k) { apply_ref(m_rule_refs[order[start[d] + k]]); }, 16);
@@ -843,6 +855,40 @@ private:
         x[s] = (random() & 1) ? Number(1) : Number(-1);
     }
     double largest = 0;
+    // Stored rules (exact plans: every rule) depth by depth on all cores: converting their
+    // weights to double is most of the work. Each rule computes what it would in plan order,
+    // and the largest is a maximum.
+    std::vector<std::size_t> start;
+    std::vector<std::uint32_t> order;
+    const std::size_t threads = internal::thread_count(m_rule_refs.size(), 20000);
+    if (threads > 1 && m_explicit_rules.size() == m_rule_refs.size() &&
+        rules_by_depth(start, order)) {
+      constexpr std::size_t block = 1024;
+      std::vector<double> block_largest;
+      for (std::size_t d = 1; d + 1 < start.size(); ++d) {
+        const std::size_t first = start[d], count = start[d + 1] - first;
+        block_largest.assign((count + block - 1) / block, 0.0);
+        internal::parallel_for_index(
+            block_largest.size(), threads,
+            [&](std::size_t b) {
+              for (std::size_t k = b * block; k < (std::min)(count, (b + 1) * block); ++k) {
+                const Rule& r =
+                    m_explicit_rules[m_rule_refs[order[first + k]] & ~explicit_rule_bit];
+                double v = 0;
+                for (int i = 0; i < r.size(); ++i)
+                  v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
+                x[r.target] = static_cast<Number>(v);
+                block_largest[b] = (std::max)(block_largest[b], std::abs(v));
+              }
+            },
+            1);
+        for (double m : block_largest)
+          largest = (std::max)(largest, m);
+      }
+      for (Slot s : free_slots())
+        largest = (std::max)(largest, double(std::abs(x[s])));
+      return largest;
+    }
     for_each_rule_in_runs(
         [&](const Rule& r, double& block_largest) {
           double v = 0;
@@ -902,6 +948,14 @@ private:
     if (ref & explicit_rule_bit)
       return m_explicit_rules[ref & ~explicit_rule_bit];
     return implicit_rule(ref, weights);
+  }
+  // f(rule) without copying a stored rule (an exact one's weights are fractions)
+  template <class F>
+  void with_rule(std::uint32_t ref, bool weights, const F& f) const {
+    if (ref & explicit_rule_bit)
+      f(m_explicit_rules[ref & ~explicit_rule_bit]);
+    else
+      f(implicit_rule(ref, weights));
   }
   void apply_ref(std::uint32_t ref) {
     if (ref & explicit_rule_bit)
