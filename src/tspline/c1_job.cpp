@@ -212,12 +212,13 @@ Json run(const C1_job& job, std::ostream& out) {
   timings["read_and_triangulate"] = clock.lap();
   memory["read_and_triangulate"] = peak_memory_mb();
   cpu["read_and_triangulate"] = cpu_clock.lap();
-  // Exact arithmetic (issue 12): about 5000 triangles per second with the fits that read
-  // values and gradients; with the local polynomials' exact coefficients, about 300 on full
-  // double mantissas (coefficients of thousands of digits), 3800 on 6-decimal data. Say what
-  // to expect, at worst, before a long silence.
+  // Exact arithmetic (issue 12): about 14000 triangles per second end to end with the fits
+  // that read values and gradients (measured on 4*10^4 triangles of full double mantissas;
+  // 19000 on 6-decimal data); with the local polynomials' exact coefficients, about 300 on
+  // full double mantissas (coefficients of thousands of digits), 3800 on 6-decimal data.
+  // Say what to expect, at worst, before a long silence.
   const double exact_rate =
-      job.fit == "adaptive" || job.fit == "local" || job.fit == "lsq" ? 250.0 : 5000.0;
+      job.fit == "adaptive" || job.fit == "local" || job.fit == "lsq" ? 250.0 : 10000.0;
   // A few seconds of work from here on: 4 * exact_rate triangles exact, 10^6 in double.
   const bool large =
       double(input.domain.number_of_faces()) > (job.exact ? 4 * exact_rate : 300000.0);
@@ -293,7 +294,8 @@ Json run(const C1_job& job, std::ostream& out) {
   memory["certify"] = peak_memory_mb();
   cpu["certify"] = cpu_clock.lap();
 
-  std::optional<long long> morgan_scott = TS::morgan_scott_dimension(d);
+  std::optional<long long> morgan_scott =
+      TS::morgan_scott_dimension(spline); // (its singular vertices)
   // The dimension, proven by two bounds: the exact plan's rules imply every C^1 condition
   // (checked exactly: dim >= its free count), and the rank of the C^1 conditions modulo a
   // prime (dim <= slots - rank). Only when several primes disagree is the rational rank
@@ -350,6 +352,16 @@ Json run(const C1_job& job, std::ostream& out) {
               return;
             }
           } catch (const TS::Invalid_input&) { // the patch's path below decides, as before
+          }
+        } else { // the converted patch's bits, without the exact patch and its copy
+          try {
+            if (const auto measures =
+                    TS::internal::converted_face_energy_and_centroid_value<Fast>(spline, f)) {
+              face_energy[face] = measures->first;
+              face_value[face] = measures->second;
+              return;
+            }
+          } catch (const TS::Invalid_input&) {
           }
         }
         const auto own = spline.patch(f);

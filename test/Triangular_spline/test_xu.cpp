@@ -823,6 +823,125 @@ TEST(Spline, ModularRankProvesTheDimensionOnScatteredPoints) {
   }
 }
 
+// The domain's checks run face by face and vertex by vertex on all cores for exact kernels
+// (more than 1000 items per thread): the error must still be the one of the first bad face,
+// then of the first bad fan, as one thread reports it.
+TEST(Domain, ChecksOnAllCoresReportTheFirstBadFaceAndFan) {
+  using K = Exact_kernel;
+  using FT = K::FT;
+  const Planar_domain<K> plain = grid<K>(40, false); // 1681 vertices, 3200 triangles
+  auto message = [](const auto& build) {
+    try {
+      build();
+    } catch (const TS::Invalid_input& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  auto on_one_and_all_cores = [&](const auto& build) {
+    TS::internal::thread_limit() = 1;
+    const std::string one = message(build);
+    TS::internal::thread_limit() = 0;
+    EXPECT_EQ(message(build), one);
+    return one;
+  };
+  std::vector<std::array<Index, 3>> triangles = plain.faces();
+  triangles[3100] = {{0, 1, 2}}; // (0,0), (1,0), (2,0): collinear
+  triangles[1500] = {{41, 42, 43}};
+  EXPECT_NE(on_one_and_all_cores([&] {
+              Planar_domain<K>(plain.points(), triangles);
+            }).find("triangle 1500 (41, 42, 43) has zero area"),
+            std::string::npos);
+  // Two fans that wind twice around their centres (twelve 60-degree turns, every ring point
+  // distinct), appended after the grid: the first centre's fan is named.
+  std::vector<K::Point_2> points = plain.points();
+  triangles = plain.faces();
+  std::vector<Index> centres;
+  for (const int x : {100, 200}) {
+    const Index first = Index(points.size());
+    for (int k = 0; k < 12; ++k) {
+      const double angle = k * CGAL_PI / 3;
+      const FT radius = k < 6 ? 1 : 2;
+      points.emplace_back(FT(x) + radius * FT(std::round(1000 * std::cos(angle))) / 1000,
+                          radius * FT(std::round(1000 * std::sin(angle))) / 1000);
+    }
+    centres.push_back(Index(points.size()));
+    points.emplace_back(FT(x), FT(0));
+    for (Index k = 0; k < 11; ++k)
+      triangles.push_back({{centres.back(), first + k, first + k + 1}});
+  }
+  EXPECT_NE(on_one_and_all_cores([&] { Planar_domain<K>(points, triangles); })
+                .find("vertex " + std::to_string(centres[0]) +
+                      " (100, 0) overlap (they turn more "
+                      "than once around it)"),
+            std::string::npos);
+  // The degenerate frames are listed in edge order on all cores too.
+  const Planar_domain<K> cross = grid<K>(36, true);
+  TS::internal::thread_limit() = 1;
+  const auto one = TS::find_degenerate_frames(cross);
+  TS::internal::thread_limit() = 0;
+  const auto all = TS::find_degenerate_frames(cross);
+  ASSERT_GT(one.frames.size(), 5000u);
+  ASSERT_EQ(all.frames.size(), one.frames.size());
+  for (std::size_t i = 0; i < one.frames.size(); ++i) {
+    EXPECT_EQ(all.frames[i].edge, one.frames[i].edge);
+    EXPECT_EQ(all.frames[i].vertex, one.frames[i].vertex);
+    EXPECT_EQ(all.frames[i].apex_left, one.frames[i].apex_left);
+    EXPECT_EQ(all.frames[i].apex_right, one.frames[i].apex_right);
+    EXPECT_EQ(all.frames[i].numerical, one.frames[i].numerical);
+  }
+  EXPECT_EQ(all.singular_vertices, one.singular_vertices);
+  EXPECT_EQ(all.singular_vertices.size(), 36u * 36u);
+}
+
+// Exact plans choose their frames and compute their rules' weights on all cores, then list
+// the rules in order: the plan must be the one-thread plan, rule for rule, on a grid whose
+// frames are exactly degenerate (exact re-routing, singular vertices), nearly so (points
+// moved by 1e-9: thin re-routing) or regular.
+TEST(Plan, ExactPlanOnAllCoresIsTheOneThreadPlan) {
+  using K = Exact_kernel;
+  using FT = K::FT;
+  std::mt19937 random(41);
+  std::uniform_int_distribution<int> jitter(-1000, 1000);
+  std::vector<K::Point_2> points;
+  const int n = 45;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const bool moved = i > 0 && i < n && j > 0 && j < n && random() % 2 == 0;
+      const FT dx = moved ? FT(jitter(random)) / 1000000000000 : FT(0);
+      points.emplace_back(FT(i) / n + dx, FT(j) / n);
+    }
+  const Planar_domain<K> domain = delaunay_of<K>(points);
+  TS::internal::thread_limit() = 1;
+  const C1_quintic_spline<K> one(domain);
+  TS::internal::thread_limit() = 0;
+  const C1_quintic_spline<K> all(domain);
+  ASSERT_GT(one.degenerate_frames().size(), 100u);
+  std::size_t thin = 0;
+  for (const auto& frame : one.rerouted_frames())
+    thin += frame.thin ? 1 : 0;
+  EXPECT_GT(thin, 10u);
+  EXPECT_EQ(all.degenerate_frames().size(), one.degenerate_frames().size());
+  ASSERT_EQ(all.rerouted_frames().size(), one.rerouted_frames().size());
+  for (std::size_t i = 0; i < one.rerouted_frames().size(); ++i) {
+    EXPECT_EQ(all.rerouted_frames()[i].edge, one.rerouted_frames()[i].edge);
+    EXPECT_EQ(all.rerouted_frames()[i].vertex, one.rerouted_frames()[i].vertex);
+    EXPECT_EQ(all.rerouted_frames()[i].thin, one.rerouted_frames()[i].thin);
+  }
+  EXPECT_EQ(all.singular_vertices(), one.singular_vertices());
+  EXPECT_EQ(all.near_singular_vertices(), one.near_singular_vertices());
+  EXPECT_EQ(all.max_propagation_weight(), one.max_propagation_weight());
+  EXPECT_EQ(all.number_of_free_parameters(), one.number_of_free_parameters());
+  ASSERT_EQ(all.number_of_rules(), one.number_of_rules());
+  ASSERT_GT(one.number_of_rules(), 20000u);
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < one.number_of_rules(); ++i) {
+    const auto a = one.rule(i), b = all.rule(i);
+    differ += a.target != b.target || a.sources != b.sources || a.weights != b.weights ? 1 : 0;
+  }
+  EXPECT_EQ(differ, 0u);
+}
+
 TEST(Spline, FreeCountEqualsExactRankAndMorganScott) {
   using K = Exact_kernel;
   for (const auto& [name, domain] : all_domains<K>()) {
@@ -839,6 +958,7 @@ TEST(Spline, FreeCountEqualsExactRankAndMorganScott) {
       ASSERT_TRUE(ms.has_value()) << name;
       EXPECT_EQ(static_cast<long long>(free), *ms) << name;
     }
+    EXPECT_EQ(TS::morgan_scott_dimension(spline), ms) << name; // the plan's singular vertices
     // The perturbed domain has no singular vertex: the generic count, again equal to the rank.
     std::vector<TS::Vertex_move<K::Point_2, Index>> moves;
     const Planar_domain<K> moved = TS::perturb_degenerate_vertices(domain, moves);
@@ -854,6 +974,7 @@ TEST(Spline, FreeCountEqualsExactRankAndMorganScott) {
       3 * criss_cross.number_of_vertices() + 3 * criss_cross.number_of_faces() +
       criss_cross.number_of_interior_edges() + 3 * criss_cross.number_of_boundary_edges();
   EXPECT_EQ(spline.number_of_free_parameters(), generic + 9);
+  EXPECT_EQ(TS::morgan_scott_dimension(spline), TS::morgan_scott_dimension(criss_cross));
   // A degree-4 fan on two lines: one singular vertex, every spoke degenerate at the centre.
   const C1_quintic_spline<K> cross(fan<K>(2));
   EXPECT_EQ(cross.singular_vertices().size(), 1u);
@@ -2652,6 +2773,48 @@ TEST(Plan, FaceMeasuresAreThePatchsBits) {
     EXPECT_EQ(measures->second,
               patch.evaluate(CGAL::centroid(patch.vertex(0), patch.vertex(1), patch.vertex(2))));
   }
+}
+
+TEST(Plan, ConvertedFaceMeasuresAreTheConvertedPatchsBits) {
+  // tspline c1 measures exact builds in double: converted_face_energy_and_centroid_value()
+  // must give what the patch converted by convert_patch<Epick>() gives, bit for bit, on
+  // rationals that doubles round (thirds, sevenths), and nothing where that patch cannot be
+  // built in double (a triangle whose height rounds to zero; a value beyond double's range).
+  using K = Exact_kernel;
+  std::vector<K::Point_2> points;
+  for (const auto& p : random_square_points(400, 31))
+    points.emplace_back(K::FT(p.x()) / 3, K::FT(p.y()) / 7);
+  C1_quintic_spline<K> exact(delaunay_of<K>(points));
+  int next = 1;
+  for (const auto s : exact.free_slots())
+    exact.set_free_value(s, K::FT(next++ % 11, 3) + K::FT(1, 7));
+  exact.propagate();
+  for (std::uint32_t f = 0; f < exact.domain().number_of_faces(); ++f) {
+    const auto measures = TS::internal::converted_face_energy_and_centroid_value<Epick>(exact, f);
+    ASSERT_TRUE(measures.has_value()) << f;
+    const auto patch = TS::convert_patch<Epick>(exact.patch(f));
+    EXPECT_EQ(measures->first, TS::thin_plate_energy(patch)) << f;
+    EXPECT_EQ(measures->second,
+              patch.evaluate(CGAL::centroid(patch.vertex(0), patch.vertex(1), patch.vertex(2))))
+        << f;
+  }
+  const K::FT tiny = K::FT(1) / K::FT(std::ldexp(1.0, 1000)) / K::FT(std::ldexp(1.0, 200));
+  const std::vector<K::Point_2> thin{{0, 0}, {1, 0}, {K::FT(1, 2), tiny}};
+  C1_quintic_spline<K> sliver(delaunay_of<K>(thin));
+  for (const auto s : sliver.free_slots())
+    sliver.set_free_value(s, K::FT(1, 3));
+  sliver.propagate();
+  EXPECT_THROW(TS::convert_patch<Epick>(sliver.patch(0)), TS::Invalid_input);
+  EXPECT_FALSE(TS::internal::converted_face_energy_and_centroid_value<Epick>(sliver, 0));
+  const std::vector<K::Point_2> plain{{0, 0}, {1, 0}, {0, 1}};
+  C1_quintic_spline<K> huge(delaunay_of<K>(plain));
+  for (const auto s : huge.free_slots())
+    huge.set_free_value(s, K::FT(1, 3));
+  huge.set_free_value(*huge.free_slots().begin(),
+                      K::FT(std::ldexp(1.0, 1000)) * K::FT(std::ldexp(1.0, 100)));
+  huge.propagate();
+  EXPECT_THROW(TS::convert_patch<Epick>(huge.patch(0)), TS::Invalid_input);
+  EXPECT_FALSE(TS::internal::converted_face_energy_and_centroid_value<Epick>(huge, 0));
 }
 
 TEST(Tension, FactorsIntegrateTheGradientExactly) {

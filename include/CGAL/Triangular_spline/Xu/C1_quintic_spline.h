@@ -791,7 +791,7 @@ private:
     }
     CGAL_USE(implicit);
     m_rule_refs.push_back(explicit_rule_bit | static_cast<std::uint32_t>(m_explicit_rules.size()));
-    m_explicit_rules.push_back(Rule{target, sources, weights});
+    m_explicit_rules.push_back(Rule{target, sources, std::move(weights)});
   }
 
   // Double plans keep their regular rules implicit, so build_plan_once() computes those
@@ -1242,17 +1242,24 @@ private:
   // to rounding) always; otherwise the end whose regular weights exceed
   // `propagation_weight_bound`, the larger one if both do. `allow_thin[e] == 0` forbids
   // re-routing a thin frame of edge e (used to break the rare dependency cycles).
-  std::vector<Edge_route> route_edges(const std::vector<char>& allow_thin) const {
+  // `middle` (plans that store their rules): the regular rule's weights of both ends of
+  // every interior edge, index 2e + side, where computed (not at exactly degenerate ends);
+  // step 3 of build_plan_once() takes them instead of computing them again.
+  std::vector<Edge_route>
+  route_edges(const std::vector<char>& allow_thin,
+              std::vector<std::optional<std::array<FT, 3>>>* middle = nullptr) const {
     const Index E = static_cast<Index>(m_domain.number_of_edges());
     std::vector<Edge_route> routes(E);
+    if (middle)
+      middle->assign(2 * std::size_t(E), std::nullopt);
     std::vector<char> exact_end(2 * std::size_t(E), 0), numerical_end(2 * std::size_t(E), 0);
     for (const auto& d : m_degenerate.frames) {
       const int side = m_domain.edge(d.edge)[0] == d.vertex ? 0 : 1;
       (d.numerical ? numerical_end : exact_end)[2 * std::size_t(d.edge) + std::size_t(side)] = 1;
     }
-    // (each edge's route on its own: on all cores in double)
+    // (each edge's route on its own, on all cores)
     internal::parallel_for_index(
-        E, parallel_plan ? internal::thread_count(E, 20000) : 1, [&](std::size_t i) {
+        E, internal::thread_count(E, parallel_plan ? 20000 : 1000), [&](std::size_t i) {
           const Index e = static_cast<Index>(i);
           if (m_domain.is_boundary_edge(e))
             return;
@@ -1265,8 +1272,14 @@ private:
             const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
             const Point_2& r = m_domain.point(ends[std::size_t(side)]);
             const Point_2& other = m_domain.point(ends[std::size_t(1 - side)]);
-            weight[std::size_t(side)] = exact_end[k] ? std::numeric_limits<double>::infinity()
-                                                     : largest_abs(barycentric(other, pl, r, pr));
+            if (exact_end[k]) {
+              weight[std::size_t(side)] = std::numeric_limits<double>::infinity();
+            } else {
+              std::array<FT, 3> w = barycentric(other, pl, r, pr);
+              weight[std::size_t(side)] = largest_abs(w);
+              if (middle)
+                (*middle)[k] = std::move(w);
+            }
             if (numerical_end[k]) // ranked after exact ends, before every thin one
               weight[std::size_t(side)] = (std::numeric_limits<double>::max)();
           }
@@ -1301,8 +1314,7 @@ private:
     // points measured needed a second round).
     std::vector<std::array<std::uint32_t, 3>> frames;
     Weight_statistics corner_weights;
-    if constexpr (parallel_plan)
-      choose_frames(frames, corner_weights);
+    choose_frames(frames, parallel_plan ? &corner_weights : nullptr);
     for (;;) {
       ++m_plan_rounds;
       m_rule_refs.clear();
@@ -1327,7 +1339,10 @@ private:
     // would last as long as the spline (100 MB at 10^6 points).
     m_free.shrink_to_fit();
     m_rule_refs.shrink_to_fit();
-    m_explicit_rules.shrink_to_fit();
+    // (An exact plan's stored rules were reserved nearly right and the rest never touched:
+    // shrinking would copy every rule.)
+    if (m_explicit_rules.capacity() - m_explicit_rules.size() > m_explicit_rules.size() / 8)
+      m_explicit_rules.shrink_to_fit();
     m_frames.shrink_to_fit();
     m_values.assign(m_free.size(), zero());
     if constexpr (std::is_same_v<Value, double>) {
@@ -1344,32 +1359,40 @@ private:
     return k == 0 ? m_domain.point(v) : m_domain.point(m_domain.neighbours(v).first[k - 1]);
   }
 
-  // The frame of every corner region (choose_frame()) on all cores, and in `weights` the
-  // statistics of the corner regions' rules.
+  // The frame of every corner region (choose_frame()) on all cores, and in `weights` (if
+  // given: plans whose rules stay implicit) the statistics of the corner regions' rules.
   void choose_frames(std::vector<std::array<std::uint32_t, 3>>& frames,
-                     Weight_statistics& weights) {
+                     Weight_statistics* weights) {
     const std::size_t V = m_domain.number_of_vertices();
     frames.resize(V);
     std::vector<Weight_statistics> blocks((V + internal::parallel_block - 1) /
                                           internal::parallel_block);
-    internal::parallel_for_index(V, internal::thread_count(V, 20000), [&](std::size_t i) {
-      Weight_statistics& w = blocks[i / internal::parallel_block];
-      const Index v = static_cast<Index>(i);
-      const std::array<std::size_t, 3> frame = choose_frame(v);
-      frames[i] = {{std::uint32_t(frame[0]), std::uint32_t(frame[1]), std::uint32_t(frame[2])}};
-      const Point_2 &a = region_point(v, frame[0]), &b = region_point(v, frame[1]),
-                    &c = region_point(v, frame[2]);
-      const std::size_t size = 1 + m_domain.degree(v);
-      for (std::size_t k = 0; k < size; ++k)
-        if (k != frame[0] && k != frame[1] && k != frame[2])
-          count_weight(w, region_slot(v, k), largest_abs(barycentric(region_point(v, k), a, b, c)));
-    });
-    weights = {};
-    add_weights(weights, blocks);
+    internal::parallel_for_index(
+        V, internal::thread_count(V, weights ? 20000 : 1000), [&](std::size_t i) {
+          Weight_statistics& w = blocks[i / internal::parallel_block];
+          const Index v = static_cast<Index>(i);
+          const std::array<std::size_t, 3> frame = choose_frame(v);
+          frames[i] = {{std::uint32_t(frame[0]), std::uint32_t(frame[1]), std::uint32_t(frame[2])}};
+          if (!weights)
+            return;
+          const Point_2 &a = region_point(v, frame[0]), &b = region_point(v, frame[1]),
+                        &c = region_point(v, frame[2]);
+          const std::size_t size = 1 + m_domain.degree(v);
+          for (std::size_t k = 0; k < size; ++k)
+            if (k != frame[0] && k != frame[1] && k != frame[2])
+              count_weight(w, region_slot(v, k),
+                           largest_abs(barycentric(region_point(v, k), a, b, c)));
+        });
+    if (weights) {
+      *weights = {};
+      add_weights(*weights, blocks);
+    }
   }
 
-  // One round of the plan; `frames` the corner regions' frames where they were chosen
-  // apart (choose_frames(), in double), empty otherwise.
+  // One round of the plan; `frames` the corner regions' frames (choose_frames()).
+  // Plans that store their rules (exact ones) compute the rules' weights on all cores too,
+  // corner regions by vertex, edge points by edge, before listing the rules in order: each
+  // rule gets the very weights the serial listing computed.
   void build_plan_once(const std::vector<std::array<std::uint32_t, 3>>& frames,
                        const std::vector<char>& allow_thin, std::vector<Index>& thin_edge_of_rule) {
     const Index V = static_cast<Index>(m_domain.number_of_vertices());
@@ -1380,14 +1403,43 @@ private:
 
     // 1. Corner regions (Lemma 3.3.2): every point of the region is the affine image of its
     // domain point under the map fixed by the three prescribed points.
-    // (In double the frames, and their rules' weights for the statistics, on all cores.)
+    // (The frames, and in double their rules' weights for the statistics, on all cores.)
+    auto is_frame = [](const std::array<std::uint32_t, 3>& frame, std::size_t k) {
+      return k == frame[0] || k == frame[1] || k == frame[2];
+    };
+    // stored plans: the weights of vertex v's rules from corner_weights[corner_first[v]] on
+    std::vector<std::array<FT, 3>> corner_weights;
+    std::vector<std::size_t> corner_first;
+    if constexpr (!parallel_plan) {
+      corner_first.assign(std::size_t(V) + 1, 0);
+      for (Index v = 0; v < V; ++v) {
+        std::size_t rules = 0;
+        for (std::size_t k = 0; k <= m_domain.degree(v); ++k)
+          rules += is_frame(frames[v], k) ? 0 : 1;
+        corner_first[std::size_t(v) + 1] = corner_first[v] + rules;
+      }
+      corner_weights.resize(corner_first.back());
+      // a third of the stored rules, the rest mostly one or two per edge; a vector that grew
+      // would copy its rules (GMP's move constructor is not noexcept)
+      m_explicit_rules.reserve(corner_first.back() + 3 * std::size_t(E) + std::size_t(V) / 8);
+      internal::parallel_for_index(
+          V, internal::thread_count(V, 1000),
+          [&](std::size_t i) {
+            const Index v = static_cast<Index>(i);
+            const auto& frame = frames[i];
+            const Point_2 &a = region_point(v, frame[0]), &b = region_point(v, frame[1]),
+                          &c = region_point(v, frame[2]);
+            std::size_t next = corner_first[i];
+            for (std::size_t k = 0; k <= m_domain.degree(v); ++k)
+              if (!is_frame(frame, k))
+                corner_weights[next++] = barycentric(region_point(v, k), a, b, c);
+          },
+          256);
+    }
     for (Index v = 0; v < V; ++v) {
       const std::size_t size = 1 + m_domain.degree(v);
-      std::array<std::size_t, 3> frame;
-      if constexpr (parallel_plan)
-        frame = {{frames[v][0], frames[v][1], frames[v][2]}};
-      else
-        frame = choose_frame(v);
+      const std::array<std::size_t, 3> frame{{frames[v][0], frames[v][1], frames[v][2]}};
+      std::size_t next = parallel_plan ? 0 : corner_first[v];
       for (std::size_t k : frame)
         m_free[region_slot(v, k)] = 1;
       m_frame_order[v] = frame_order_code(frame);
@@ -1399,14 +1451,14 @@ private:
         else
           add_rule(region_slot(v, k),
                    {{region_slot(v, frame[0]), region_slot(v, frame[1]), region_slot(v, frame[2])}},
-                   barycentric(region_point(v, k), region_point(v, frame[0]),
-                               region_point(v, frame[1]), region_point(v, frame[2])),
-                   true);
+                   std::move(corner_weights[next++]), true);
       }
     }
     thin_edge_of_rule.assign(m_rule_refs.size(), Domain::null_index);
 
-    std::vector<Edge_route> routes = route_edges(allow_thin);
+    internal::release(corner_weights);
+    std::vector<std::optional<std::array<FT, 3>>> middle; // stored plans (route_edges())
+    std::vector<Edge_route> routes = route_edges(allow_thin, parallel_plan ? nullptr : &middle);
     m_frames.clear();
     m_near_singular.clear();
 
@@ -1624,12 +1676,14 @@ private:
           add_wide_rule(edge_middle_slot(e, r), *closing, thin_edge_of_rule);
           continue;
         }
-        if constexpr (parallel_plan)
+        if constexpr (parallel_plan) {
           m_rule_refs.push_back(edge_middle_slot(e, r)); // implicit, weights counted above
-        else
+        } else {
+          std::optional<std::array<FT, 3>>& w = middle[2 * std::size_t(e) + std::size_t(side)];
           add_rule(edge_middle_slot(e, r),
                    {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
-                   middle_weights(e, side), true);
+                   w ? std::move(*w) : middle_weights(e, side), true);
+        }
         thin_edge_of_rule.push_back(Domain::null_index);
       }
     }
@@ -1679,7 +1733,26 @@ private:
     auto regular_edge = [&](Index e) {
       return !m_domain.is_boundary_edge(e) && routes[e].end == Domain::null_index;
     };
+    internal::release(middle);
     std::vector<unsigned char> free_flip;
+    std::vector<std::array<FT, 3>> flip_weights_of; // stored plans: the chosen rule's, by edge
+    if constexpr (!parallel_plan) {
+      free_flip.assign(E, 0);
+      flip_weights_of.resize(E);
+      internal::parallel_for_index(
+          E, internal::thread_count(E, 1000),
+          [&](std::size_t i) {
+            const Index e = static_cast<Index>(i);
+            if (!regular_edge(e))
+              return;
+            std::array<FT, 3> right_from_left = flip_weights(e, true);
+            std::array<FT, 3> left_from_right = flip_weights(e, false);
+            const bool left_free = !(largest_abs(left_from_right) < largest_abs(right_from_left));
+            free_flip[i] = left_free ? 1 : 2;
+            flip_weights_of[i] = std::move(left_free ? right_from_left : left_from_right);
+          },
+          256);
+    }
     if constexpr (parallel_plan) {
       free_flip.assign(E, 0);
       parallel_with_weights(E, [&](std::size_t i, Weight_statistics& w) {
@@ -1699,16 +1772,7 @@ private:
         continue;
       const auto& ends = m_domain.edge(e);
       const auto& ef = m_domain.edge_faces(e);
-      bool left_free;
-      std::array<FT, 3> weights;
-      if constexpr (parallel_plan) {
-        left_free = free_flip[e] == 1;
-      } else {
-        const std::array<FT, 3> right_from_left = flip_weights(e, true);
-        const std::array<FT, 3> left_from_right = flip_weights(e, false);
-        left_free = !(largest_abs(left_from_right) < largest_abs(right_from_left));
-        weights = left_free ? right_from_left : left_from_right;
-      }
+      const bool left_free = free_flip[e] == 1;
       const Index free_face = left_free ? ef[0] : ef[1], other_face = left_free ? ef[1] : ef[0];
       m_free[flip_slot(free_face, e)] = 1;
       if constexpr (parallel_plan)
@@ -1717,7 +1781,7 @@ private:
         add_rule(
             flip_slot(other_face, e),
             {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
-            weights, true);
+            std::move(flip_weights_of[e]), true);
       thin_edge_of_rule.push_back(Domain::null_index);
     }
   }
@@ -1963,7 +2027,22 @@ private:
   bool order_rules(const std::vector<Index>& thin_edge_of_rule, std::vector<char>& allow_thin) {
     const std::size_t R = m_rule_refs.size();
     constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
-    auto sources_of = [&](std::size_t i) { return rule_of_ref(m_rule_refs[i], false); };
+    // a rule's target and sources (a stored rule read in place: copying an exact one's
+    // weights was most of this function's time)
+    struct Links {
+      Slot target;
+      std::array<Slot, 3> sources;
+      int size() const { return sources[2] == null_slot ? 2 : 3; }
+    };
+    auto sources_of = [&](std::size_t i) {
+      const std::uint32_t ref = m_rule_refs[i];
+      if (ref & explicit_rule_bit) {
+        const Rule& r = m_explicit_rules[ref & ~explicit_rule_bit];
+        return Links{r.target, r.sources};
+      }
+      const Rule r = implicit_rule(ref, false);
+      return Links{r.target, r.sources};
+    };
     // 1. One pass in emission order: a rule whose sources are all free or computed by an
     // earlier kept rule stays where it is (all rules but those reading a thin link's edge
     // point, and what depends on them). Only the others need the depth-first search.
@@ -1974,7 +2053,7 @@ private:
     std::vector<std::uint32_t> deferred;
     // whether rule i stays; if so its target is ready
     auto keep = [&](std::size_t i) {
-      const Rule rule = sources_of(i);
+      const Links rule = sources_of(i);
       for (int j = 0; j < rule.size(); ++j)
         if (!ready[rule.sources[std::size_t(j)]])
           return false;
@@ -2050,7 +2129,7 @@ private:
     };
     std::vector<Visit> stack;
     auto visit = [&](std::uint32_t i) {
-      const Rule r = sources_of(i);
+      const Links r = sources_of(i);
       stack.push_back({i, 0, r.size(), r.sources});
     };
     bool cycle = false;

@@ -7,6 +7,7 @@
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 #include <CGAL/Triangular_spline/internal/frame_degeneracy.h>
+#include <CGAL/Triangular_spline/internal/parallel.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 
@@ -86,24 +87,42 @@ find_degenerate_frames(const Planar_domain<GeomTraits>& domain) {
   auto collinear = [&](const auto& a, const auto& b, const auto& c) {
     return orientation(a, b, c) == CGAL::COLLINEAR;
   };
+  // The tests edge by edge on all cores (2 bits per end: degenerate, numerically so), then
+  // the frames listed in edge order.
+  const std::size_t E = domain.number_of_edges();
+  std::vector<unsigned char> ends(E, 0);
+  internal::parallel_for_index(
+      E, internal::thread_count(E, exact ? 1000 : 20000), [&](std::size_t i) {
+        const Index e = static_cast<Index>(i);
+        if (domain.is_boundary_edge(e))
+          return;
+        const auto& ef = domain.edge_faces(e);
+        const auto& p = domain.point(domain.opposite_vertex(ef[0], e));
+        const auto& q = domain.point(domain.opposite_vertex(ef[1], e));
+        for (std::size_t side = 0; side < 2; ++side) {
+          const auto& r = domain.point(domain.edge(e)[side]);
+          bool numerical = false;
+          if (!collinear(p, r, q)) {
+            if (exact || !internal::numerically_collinear(p, r, q))
+              continue;
+            numerical = true;
+          }
+          ends[i] |= static_cast<unsigned char>((numerical ? 3 : 1) << (2 * side));
+        }
+      });
   std::vector<unsigned> degenerate_ends(domain.number_of_vertices(), 0);
-  for (Index e = 0; e < domain.number_of_edges(); ++e) {
-    if (domain.is_boundary_edge(e))
+  for (Index e = 0; e < E; ++e) {
+    if (!ends[e])
       continue;
     const auto& ef = domain.edge_faces(e);
     const Index left = domain.opposite_vertex(ef[0], e);
     const Index right = domain.opposite_vertex(ef[1], e);
-    for (Index end : domain.edge(e)) {
-      const auto& p = domain.point(left);
-      const auto& r = domain.point(end);
-      const auto& q = domain.point(right);
-      bool numerical = false;
-      if (!collinear(p, r, q)) {
-        if (exact || !internal::numerically_collinear(p, r, q))
-          continue;
-        numerical = true;
-      }
-      result.frames.push_back({e, end, left, right, numerical});
+    for (std::size_t side = 0; side < 2; ++side) {
+      const unsigned bits = (ends[e] >> (2 * side)) & 3u;
+      if (!bits)
+        continue;
+      const Index end = domain.edge(e)[side];
+      result.frames.push_back({e, end, left, right, bits == 3});
       ++degenerate_ends[end];
     }
   }
