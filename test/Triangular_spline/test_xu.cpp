@@ -25,6 +25,7 @@
 #include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 #include <CGAL/Triangular_spline/Xu/make_c1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
+#include <CGAL/Triangular_spline/internal/filtered_orientation.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 
 #include <algorithm>
@@ -821,6 +822,46 @@ TEST(Spline, ModularRankProvesTheDimensionOnScatteredPoints) {
   if (const auto ms = TS::morgan_scott_dimension(domain)) {
     EXPECT_EQ(static_cast<long long>(bound.upper_bound), *ms);
   }
+}
+
+// The interval filter of the exact orientation test (GMP rationals) must give the exact
+// answer on generic triples, on exactly collinear ones with long denominators, on triples
+// 1e-40 off a line (the filter cannot decide: the exact test runs), and on values the
+// filter does not enclose (beyond double's range, subnormal, zero).
+TEST(Plan, FilteredOrientationIsTheExactOrientation) {
+  using K = Exact_kernel;
+  using FT = K::FT;
+  const K traits;
+  std::mt19937 random(43);
+  std::uniform_int_distribution<long> digits(-999999999L, 999999999L);
+  auto rational = [&] { return FT(digits(random)) / FT(digits(random) | 1); };
+  std::array<std::size_t, 3> seen{}; // right turns, collinear, left turns
+  auto check = [&](const K::Point_2& p, const K::Point_2& q, const K::Point_2& r) {
+    const CGAL::Orientation exact = traits.orientation_2_object()(p, q, r);
+    EXPECT_EQ(TS::internal::filtered_orientation(traits, p, q, r), exact)
+        << p << " | " << q << " | " << r;
+    ++seen[std::size_t(int(exact) + 1)];
+  };
+  const FT tiny = FT(1) / FT(std::ldexp(1.0, 1000)) / FT(std::ldexp(1.0, 80));
+  const FT huge = FT(std::ldexp(1.0, 1000)) * FT(std::ldexp(1.0, 100));
+  const FT nudge = FT(1) / FT(std::ldexp(1.0, 133));
+  for (int i = 0; i < 3000; ++i) {
+    const K::Point_2 p(rational(), rational()), q(rational(), rational());
+    const FT t = rational();
+    const K::Point_2 on(p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y()));
+    check(p, q, K::Point_2(rational(), rational()));
+    check(p, q, on);                                 // collinear
+    check(p, q, K::Point_2(on.x(), on.y() + nudge)); // 1e-40 off the line
+    check(p, q, K::Point_2(on.x(), on.y() - nudge));
+    check(K::Point_2(p.x() * tiny, p.y() * tiny), K::Point_2(q.x() * tiny, q.y() * tiny),
+          K::Point_2(on.x() * tiny, on.y() * tiny + (i % 3 - 1) * tiny * nudge));
+    check(K::Point_2(p.x() * huge, p.y()), K::Point_2(q.x() * huge, q.y()),
+          K::Point_2(on.x() * huge, on.y() + (i % 3 - 1) * nudge));
+    check(K::Point_2(0, 0), K::Point_2(p.x(), 0), K::Point_2(q.x(), FT(i % 3 - 1)));
+  }
+  EXPECT_GT(seen[0], 3000u);
+  EXPECT_GT(seen[1], 3000u);
+  EXPECT_GT(seen[2], 3000u);
 }
 
 // The domain's checks run face by face and vertex by vertex on all cores for exact kernels

@@ -5,6 +5,7 @@
 #define CGAL_TRIANGULAR_SPLINE_DOMAIN_PLANAR_DOMAIN_H
 
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/filtered_orientation.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 #include <CGAL/Triangular_spline/internal/text.h>
 
@@ -246,7 +247,9 @@ private:
                             std::to_string(order[i]) + " are the same point " +
                             internal::point_to_string(m_points[order[i]]));
     // Each face on its own, on all cores; the error of the first bad face, as in face order.
-    auto orientation = m_traits.orientation_2_object();
+    auto orientation = [this](const Point_2& p, const Point_2& q, const Point_2& r) {
+      return internal::filtered_orientation(m_traits, p, q, r); // exact, intervals first
+    };
     internal::parallel_for_index(
         m_faces.size(), checking_threads(m_faces.size()), [&](std::size_t f) {
           auto& t = m_faces[f];
@@ -462,7 +465,9 @@ private:
     // The fan must turn once (interior) or less than once (boundary): no later cone may
     // contain the direction of the first neighbour (exact orientation tests). Vertex by
     // vertex on all cores, once every fan is built: the error of the first bad vertex.
-    auto orientation = m_traits.orientation_2_object();
+    auto orientation = [this](const Point_2& p, const Point_2& q, const Point_2& r) {
+      return internal::filtered_orientation(m_traits, p, q, r); // exact, intervals first
+    };
     internal::parallel_for_index(n, checking_threads(n), [&](std::size_t vi) {
       const Index v = static_cast<Index>(vi);
       const auto [nb, ne] = neighbours(v);

@@ -11,6 +11,7 @@
 #include <CGAL/Triangular_spline/Xu/degenerate_frames.h>
 #include <CGAL/Triangular_spline/exceptions.h>
 #include <CGAL/Triangular_spline/internal/frame_degeneracy.h>
+#include <CGAL/Triangular_spline/internal/filtered_orientation.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 #include <CGAL/Triangular_spline/internal/release.h>
 #include <CGAL/Triangular_spline/internal/spline_plan.h>
@@ -1095,10 +1096,10 @@ private:
   std::array<std::size_t, 3> choose_frame(Index v) const {
     const auto [nb, ne] = m_domain.neighbours(v);
     const std::size_t d = static_cast<std::size_t>(ne - nb);
-    // Orientation, not collinear_2: the same exact test, statically filtered by Epick.
-    auto orientation = m_domain.geom_traits().orientation_2_object();
+    // Orientation, not collinear_2: the same exact test, statically filtered by Epick (by
+    // intervals for GMP rationals: internal::filtered_orientation()).
     auto collinear = [&](const Point_2& a, const Point_2& b, const Point_2& c) {
-      return orientation(a, b, c) == CGAL::COLLINEAR;
+      return internal::filtered_orientation(m_domain.geom_traits(), a, b, c) == CGAL::COLLINEAR;
     };
     auto point_of = [&](std::size_t k) -> const Point_2& {
       return k == 0 ? m_domain.point(v) : m_domain.point(nb[k - 1]);

@@ -6,6 +6,7 @@
 
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/filtered_orientation.h>
 #include <CGAL/Triangular_spline/internal/frame_degeneracy.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 
@@ -83,9 +84,9 @@ find_degenerate_frames(const Planar_domain<GeomTraits>& domain) {
   Degenerate_frame_analysis<Index> result;
   // The orientation predicate, not collinear_2: the same exact test, but Epick filters it
   // statically (collinear_2 went through interval arithmetic: 4% of a c1 run at 10^6 points).
-  auto orientation = domain.geom_traits().orientation_2_object();
+  // (For GMP rationals an interval filter first: internal::filtered_orientation().)
   auto collinear = [&](const auto& a, const auto& b, const auto& c) {
-    return orientation(a, b, c) == CGAL::COLLINEAR;
+    return internal::filtered_orientation(domain.geom_traits(), a, b, c) == CGAL::COLLINEAR;
   };
   // The tests edge by edge on all cores (2 bits per end: degenerate, numerically so), then
   // the frames listed in edge order.
