@@ -229,6 +229,11 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
   // The polar form of the piecewise linear interpolant at a label: its vertices' data values
   // weighted by their multiplicities, summed in the lexicographic order of the points (not
   // the numbering's).
+  // (Exact sums need no order; the multiplicities' fifths are made once: as fractions they
+  // cost two allocations and a gcd each.)
+  std::array<FT, 6> fifths;
+  for (int m = 0; m <= 5; ++m)
+    fifths[std::size_t(m)] = FT(m) / FT(5);
   auto linear_average = [&](const auto& label) {
     std::array<std::pair<std::uint32_t, int>, 3> terms;
     std::size_t count = 0;
@@ -238,12 +243,13 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       const auto &p = domain.point(terms[i].first), &q = domain.point(terms[j].first);
       return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
     };
-    for (std::size_t i = 1; i < count; ++i)
-      for (std::size_t j = i; j > 0 && before(j, j - 1); --j)
-        std::swap(terms[j], terms[j - 1]);
+    if constexpr (!exact)
+      for (std::size_t i = 1; i < count; ++i)
+        for (std::size_t j = i; j > 0 && before(j, j - 1); --j)
+          std::swap(terms[j], terms[j - 1]);
     Value sum = Value_traits<Value>::zero();
     for (std::size_t i = 0; i < count; ++i)
-      sum = sum + (FT(terms[i].second) / FT(5)) * values[terms[i].first];
+      sum = sum + fifths[std::size_t(terms[i].second)] * values[terms[i].first];
     return sum;
   };
   // How far the target of a slot reading u's polynomial at `label` moves to the linear
