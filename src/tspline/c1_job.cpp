@@ -212,13 +212,13 @@ Json run(const C1_job& job, std::ostream& out) {
   timings["read_and_triangulate"] = clock.lap();
   memory["read_and_triangulate"] = peak_memory_mb();
   cpu["read_and_triangulate"] = cpu_clock.lap();
-  // Exact arithmetic (issue 12): about 14000 triangles per second end to end with the fits
+  // Exact arithmetic (issue 12): about 19500 triangles per second end to end with the fits
   // that read values and gradients (measured on 4*10^4 triangles of full double mantissas;
-  // 19000 on 6-decimal data); with the local polynomials' exact coefficients, about 300 on
+  // 30000 on 6-decimal data); with the local polynomials' exact coefficients, about 300 on
   // full double mantissas (coefficients of thousands of digits), 3800 on 6-decimal data.
   // Say what to expect, at worst, before a long silence.
   const double exact_rate =
-      job.fit == "adaptive" || job.fit == "local" || job.fit == "lsq" ? 250.0 : 10000.0;
+      job.fit == "adaptive" || job.fit == "local" || job.fit == "lsq" ? 250.0 : 15000.0;
   // A few seconds of work from here on: 4 * exact_rate triangles exact, 10^6 in double.
   const bool large =
       double(input.domain.number_of_faces()) > (job.exact ? 4 * exact_rate : 300000.0);

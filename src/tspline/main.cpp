@@ -4,6 +4,8 @@
 #include "cli.h"
 #include "commands.h"
 
+#include <CGAL/Triangular_spline/gmp_small_block_pool.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <exception>
@@ -141,6 +143,9 @@ int main(int argc, char* argv[]) {
   }
 
   tune_malloc(argv);
+  // Exact builds keep millions of GMP integers of one to four limbs: pooled, they take 0.6x
+  // the memory and 0.8x the time (10^5 points; no effect on double builds).
+  CGAL::Triangular_spline::use_gmp_small_block_pool();
   const std::vector<std::string> args(argv + 2, argv + argc);
   const std::string prefix = "tspline " + std::string(command->name) + ": ";
   try {
