@@ -784,9 +784,11 @@ private:
 
   // Appends a rule to the plan. An `implicit` rule is one implicit_rule() rebuilds from its
   // target with the same sources and weights: in double only its target is kept.
+  // `largest`: largest_abs(weights) if the caller computed it already (on all cores).
   void add_rule(Slot target, std::array<Slot, 3> sources, std::array<FT, 3> weights,
-                bool implicit = false) {
-    const double largest = largest_abs(weights);
+                bool implicit = false, double largest = -1) {
+    if (!(largest >= 0))
+      largest = largest_abs(weights);
     const std::size_t k = std::size_t(kind(target));
     m_max_weight = (std::max)(m_max_weight, largest);
     m_max_weight_by_kind[k] = (std::max)(m_max_weight_by_kind[k], largest);
@@ -805,7 +807,13 @@ private:
     }
     CGAL_USE(implicit);
     m_rule_refs.push_back(explicit_rule_bit | static_cast<std::uint32_t>(m_explicit_rules.size()));
-    m_explicit_rules.push_back(Rule{target, sources, std::move(weights)});
+    // the weights swapped in: moving an exact rule in allocates six fractions anew
+    Rule& rule = m_explicit_rules.emplace_back();
+    rule.target = target;
+    rule.sources = sources;
+    using std::swap;
+    for (std::size_t i = 0; i < 3; ++i)
+      swap(rule.weights[i], weights[i]);
   }
 
   // Double plans keep their regular rules implicit, so build_plan_once() computes those
@@ -1286,11 +1294,14 @@ private:
   // step 3 of build_plan_once() takes them instead of computing them again.
   std::vector<Edge_route>
   route_edges(const std::vector<char>& allow_thin,
-              std::vector<std::optional<std::array<FT, 3>>>* middle = nullptr) const {
+              std::vector<std::optional<std::array<FT, 3>>>* middle = nullptr,
+              std::vector<double>* middle_largest = nullptr) const {
     const Index E = static_cast<Index>(m_domain.number_of_edges());
     std::vector<Edge_route> routes(E);
-    if (middle)
+    if (middle) {
       middle->assign(2 * std::size_t(E), std::nullopt);
+      middle_largest->assign(2 * std::size_t(E), -1.0);
+    }
     std::vector<char> exact_end(2 * std::size_t(E), 0), numerical_end(2 * std::size_t(E), 0);
     for (const auto& d : m_degenerate.frames) {
       const int side = m_domain.edge(d.edge)[0] == d.vertex ? 0 : 1;
@@ -1316,8 +1327,10 @@ private:
             } else {
               std::array<FT, 3> w = barycentric(other, pl, r, pr);
               weight[std::size_t(side)] = largest_abs(w);
-              if (middle)
+              if (middle) {
                 (*middle)[k] = std::move(w);
+                (*middle_largest)[k] = weight[std::size_t(side)];
+              }
             }
             if (numerical_end[k]) // ranked after exact ends, before every thin one
               weight[std::size_t(side)] = (std::numeric_limits<double>::max)();
@@ -1459,6 +1472,7 @@ private:
     };
     // stored plans: the weights of vertex v's rules from corner_weights[corner_first[v]] on
     std::vector<std::array<FT, 3>> corner_weights;
+    std::vector<double> corner_largest; // largest_abs() of each, computed with it
     std::vector<std::size_t> corner_first;
     if constexpr (!parallel_plan) {
       corner_first.assign(std::size_t(V) + 1, 0);
@@ -1469,6 +1483,7 @@ private:
         corner_first[std::size_t(v) + 1] = corner_first[v] + rules;
       }
       corner_weights.resize(corner_first.back());
+      corner_largest.resize(corner_first.back());
       // a third of the stored rules, the rest mostly one or two per edge; a vector that grew
       // would copy its rules (GMP's move constructor is not noexcept)
       m_explicit_rules.reserve(corner_first.back() + 3 * std::size_t(E) + std::size_t(V) / 8);
@@ -1481,8 +1496,11 @@ private:
                           &c = region_point(v, frame[2]);
             std::size_t next = corner_first[i];
             for (std::size_t k = 0; k <= m_domain.degree(v); ++k)
-              if (!is_frame(frame, k))
-                corner_weights[next++] = barycentric(region_point(v, k), a, b, c);
+              if (!is_frame(frame, k)) {
+                corner_weights[next] = barycentric(region_point(v, k), a, b, c);
+                corner_largest[next] = largest_abs(corner_weights[next]);
+                ++next;
+              }
           },
           256);
     }
@@ -1498,17 +1516,22 @@ private:
           continue;
         if constexpr (parallel_plan)
           m_rule_refs.push_back(region_slot(v, k)); // implicit, weights counted above
-        else
+        else {
           add_rule(region_slot(v, k),
                    {{region_slot(v, frame[0]), region_slot(v, frame[1]), region_slot(v, frame[2])}},
-                   std::move(corner_weights[next++]), true);
+                   std::move(corner_weights[next]), true, corner_largest[next]);
+          ++next;
+        }
       }
     }
     thin_edge_of_rule.assign(m_rule_refs.size(), Domain::null_index);
 
     internal::release(corner_weights);
+    internal::release(corner_largest);
     std::vector<std::optional<std::array<FT, 3>>> middle; // stored plans (route_edges())
-    std::vector<Edge_route> routes = route_edges(allow_thin, parallel_plan ? nullptr : &middle);
+    std::vector<double> middle_largest;
+    std::vector<Edge_route> routes =
+        route_edges(allow_thin, parallel_plan ? nullptr : &middle, &middle_largest);
     m_frames.clear();
     m_near_singular.clear();
 
@@ -1729,10 +1752,11 @@ private:
         if constexpr (parallel_plan) {
           m_rule_refs.push_back(edge_middle_slot(e, r)); // implicit, weights counted above
         } else {
-          std::optional<std::array<FT, 3>>& w = middle[2 * std::size_t(e) + std::size_t(side)];
+          const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
+          std::optional<std::array<FT, 3>>& w = middle[k];
           add_rule(edge_middle_slot(e, r),
                    {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
-                   w ? std::move(*w) : middle_weights(e, side), true);
+                   w ? std::move(*w) : middle_weights(e, side), true, w ? middle_largest[k] : -1.0);
         }
         thin_edge_of_rule.push_back(Domain::null_index);
       }
@@ -1786,9 +1810,11 @@ private:
     internal::release(middle);
     std::vector<unsigned char> free_flip;
     std::vector<std::array<FT, 3>> flip_weights_of; // stored plans: the chosen rule's, by edge
+    std::vector<double> flip_largest;               // and its largest_abs()
     if constexpr (!parallel_plan) {
       free_flip.assign(E, 0);
       flip_weights_of.resize(E);
+      flip_largest.resize(E);
       internal::parallel_for_index(
           E, internal::thread_count(E, 1000),
           [&](std::size_t i) {
@@ -1797,9 +1823,11 @@ private:
               return;
             std::array<FT, 3> right_from_left = flip_weights(e, true);
             std::array<FT, 3> left_from_right = flip_weights(e, false);
-            const bool left_free = !(largest_abs(left_from_right) < largest_abs(right_from_left));
+            const double right = largest_abs(right_from_left), left = largest_abs(left_from_right);
+            const bool left_free = !(left < right);
             free_flip[i] = left_free ? 1 : 2;
             flip_weights_of[i] = std::move(left_free ? right_from_left : left_from_right);
+            flip_largest[i] = left_free ? right : left;
           },
           256);
     }
@@ -1831,7 +1859,7 @@ private:
         add_rule(
             flip_slot(other_face, e),
             {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
-            std::move(flip_weights_of[e]), true);
+            std::move(flip_weights_of[e]), true, flip_largest[e]);
       thin_edge_of_rule.push_back(Domain::null_index);
     }
   }
