@@ -25,6 +25,7 @@
 #include <CGAL/Triangular_spline/Xu/fit_vertex_data.h>
 #include <CGAL/Triangular_spline/Xu/make_c1_quintic_spline.h>
 #include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
+#include <CGAL/Triangular_spline/internal/avx2_clones.h>
 #include <CGAL/Triangular_spline/internal/filtered_orientation.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 
@@ -34,6 +35,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -2354,12 +2356,6 @@ TEST(LocalFit, ThreadsDoNotChangeTheResult) {
   }
 }
 
-// The vectorised QR of the local fits (two-lane dot products and updates, partial ordering of
-// the candidates) keeps the bits of the scalar code it replaced: an FNV-1a hash of every
-// vertex's degree, resolution, gradient and value off the vertex, recorded with the scalar
-// code (commit de3d17f). 2000 points of the unit square from a 64-bit LCG (corners first),
-// smooth data with a kink and a bump, so that the cross-validation picks every degree from
-// 1 to 5. A change of the fit that is meant to change values records a new hash.
 TEST(LocalFit, StaysStableBesideANearlyStraightHull) {
   // A 33 x 33 grid jittered by 1e-5 and 1e-4 of a cell: the points next to the hull lie on a
   // few nearly parallel lines, which determine a cubic's columns to about 1e-5 while
@@ -2383,6 +2379,14 @@ TEST(LocalFit, StaysStableBesideANearlyStraightHull) {
   }
 }
 
+// The vectorised QR of the local fits (two-lane dot products and updates, partial ordering of
+// the candidates) keeps the bits of the scalar code it replaced: an FNV-1a hash of every
+// vertex's degree, resolution, gradient and value off the vertex, recorded with the scalar
+// code (commit de3d17f). 2000 points of the unit square from a 64-bit LCG (corners first),
+// smooth data with a kink and a bump, so that the cross-validation picks every degree from
+// 1 to 5. Both paths give it: the portable one (SSE2 on x86-64) and, where the processor
+// has AVX2, the AVX2 clone (internal/avx2_clones.h). A change of the fit that is meant to
+// change values records a new hash.
 TEST(LocalFit, VectorisedQrKeepsTheBitsOfTheScalarOne) {
   std::uint64_t state = 20261122;
   auto next = [&] {
@@ -2399,26 +2403,36 @@ TEST(LocalFit, VectorisedQrKeepsTheBitsOfTheScalarOne) {
   for (const auto& p : domain.points())
     z.push_back(std::exp(p.x()) * std::sin(2 * p.y()) + std::abs(p.x() - 0.4) +
                 (std::hypot(p.x() - 0.7, p.y() - 0.3) < 0.1 ? 0.05 : 0.0));
-  const TS::Local_polynomials<Epick> local(domain, z, 5);
-  std::uint64_t hash = 14695981039346656037ULL;
-  auto mix = [&](double x) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &x, sizeof bits);
-    for (int byte = 0; byte < 8; ++byte)
-      hash = (hash ^ ((bits >> (8 * byte)) & 0xff)) * 1099511628211ULL;
+  auto fingerprint = [&] {
+    const TS::Local_polynomials<Epick> local(domain, z, 5);
+    std::uint64_t hash = 14695981039346656037ULL;
+    auto mix = [&](double x) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      for (int byte = 0; byte < 8; ++byte)
+        hash = (hash ^ ((bits >> (8 * byte)) & 0xff)) * 1099511628211ULL;
+    };
+    std::array<int, 6> degrees{};
+    for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+      ++degrees[std::size_t(local.degree(v))];
+      mix(local.degree(v));
+      mix(local.resolution(v));
+      const auto g = local.gradient(v);
+      mix(g[0]);
+      mix(g[1]);
+      mix(local.value(v, Epick::Point_2(domain.point(v).x() + 0.01, domain.point(v).y() - 0.02)));
+    }
+    EXPECT_EQ(degrees, (std::array<int, 6>{{0, 134, 80, 191, 25, 1570}}));
+    return hash;
   };
-  std::array<int, 6> degrees{};
-  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
-    ++degrees[std::size_t(local.degree(v))];
-    mix(local.degree(v));
-    mix(local.resolution(v));
-    const auto g = local.gradient(v);
-    mix(g[0]);
-    mix(g[1]);
-    mix(local.value(v, Epick::Point_2(domain.point(v).x() + 0.01, domain.point(v).y() - 0.02)));
-  }
-  EXPECT_EQ(degrees, (std::array<int, 6>{{0, 134, 80, 191, 25, 1570}}));
-  EXPECT_EQ(hash, 0xf6893f65837af1a2ULL);
+  const bool clones = TS::internal::use_avx2_clones();
+  EXPECT_EQ(fingerprint(), 0xf6893f65837af1a2ULL) << "AVX2 clones: " << clones;
+  TS::internal::avx2_clones_allowed() = false;
+  ASSERT_FALSE(TS::internal::use_avx2_clones());
+  EXPECT_EQ(fingerprint(), 0xf6893f65837af1a2ULL) << "portable";
+  TS::internal::avx2_clones_allowed() = true;
+  if (!clones)
+    std::cout << "note: no AVX2 clones on this build or processor; the portable path only\n";
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include <CGAL/Triangular_spline/Domain/Planar_domain.h>
 #include <CGAL/Triangular_spline/Value_traits.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/avx2_clones.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Fraction_traits.h>
@@ -363,9 +364,13 @@ private:
       threads = (std::min)(cores, n / (exact ? 128 : 2000) + 1);
     }
     auto fit_range = [&](std::size_t first) {
-      Workspace work;
-      for (std::size_t i = first; i < n; i += threads)
-        fit_vertex(vertex_at(i), *m_data, work);
+#if CGAL_TRIANGULAR_SPLINE_AVX2_CLONES
+      if (internal::use_avx2_clones()) {
+        fit_every_avx2(first, threads, n, vertex_at);
+        return;
+      }
+#endif
+      fit_every(first, threads, n, vertex_at);
     };
     std::vector<std::thread> workers;
     for (std::size_t t = 1; t < threads; ++t)
@@ -374,6 +379,24 @@ private:
     for (std::thread& worker : workers)
       worker.join();
   }
+  // Fits vertex_at(i) for i = first, first + step, ... below n (one thread's share). The
+  // double kernels are inlined into it: fit_every_avx2() is the same loop compiled for AVX2
+  // (internal/avx2_clones.h; the same bits at 0.8 times the fits' time).
+  template <class Vertex_at>
+  void fit_every(std::size_t first, std::size_t step, std::size_t n, const Vertex_at& vertex_at) {
+    Workspace work;
+    for (std::size_t i = first; i < n; i += step)
+      fit_vertex<false>(vertex_at(i), *m_data, work);
+  }
+#if CGAL_TRIANGULAR_SPLINE_AVX2_CLONES
+  template <class Vertex_at>
+  CGAL_TRIANGULAR_SPLINE_AVX2_TARGET void
+  fit_every_avx2(std::size_t first, std::size_t step, std::size_t n, const Vertex_at& vertex_at) {
+    Workspace work;
+    for (std::size_t i = first; i < n; i += step)
+      fit_vertex<true>(vertex_at(i), *m_data, work);
+  }
+#endif
   static constexpr int D = Value_traits<Value>::dimension;
   static constexpr bool exact = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
   // Exact number types that are fractions of an integer type fit over those integers.
@@ -408,7 +431,9 @@ private:
                                         {1, 4, 6, 4, 1, 0}, {1, 5, 10, 10, 5, 1}};
     return table[n][k];
   }
-  static int unknowns(int d) { return (d + 1) * (d + 2) / 2 - 1; }
+  static int unknowns(int d) {
+    return (d + 1) * (d + 2) / 2 - 1;
+  }
 
   // Whether v's coefficients of degree >= 1 are kept as numerators over a common
   // denominator (then only there: reducing each fraction costs a gcd of thousands of digits).
@@ -477,7 +502,9 @@ private:
   }
 
   // The points a fit of degree d takes: 1.5 times its unknowns (a plane: 2).
-  static std::size_t needed(int d) { return d == 1 ? 2 : std::size_t((3 * unknowns(d) + 1) / 2); }
+  static std::size_t needed(int d) {
+    return d == 1 ? 2 : std::size_t((3 * unknowns(d) + 1) / 2);
+  }
 
   // The neighbourhood of v: its first ring (the plane's points), and candidates from the
   // rings by breadth-first search (up to max_rings rings, until twice the points the
@@ -603,28 +630,45 @@ private:
   // sum x[i] y[i] over [begin, end), in four interleaved partial sums: without them the
   // compiler may not reorder the additions, and one chain of dependent adds is four times
   // slower (the order is fixed, so the result does not depend on the machine's load).
-  // GCC and Clang: the four sums as two vectors of two lanes, the same operations on every
-  // lane (the same bits), which the compiler does not find itself (half the instructions of
-  // the fits went to this loop).
-  static double dot(const double* x, const double* y, std::size_t begin, std::size_t end) {
+  // GCC and Clang: the four sums as one vector of four lanes (two SSE2 registers, or one
+  // AVX2 register in fit_every_avx2()), the same operations on every lane (the same bits),
+  // which the compiler does not find itself (half the instructions of the fits went here).
+  template <bool Wide>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE static double dot(const double* x, const double* y,
+                                                         std::size_t begin, std::size_t end) {
     double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
     std::size_t i = begin;
 #if defined(__GNUC__)
-    typedef double Pair __attribute__((vector_size(16)));
-    Pair s01 = {0, 0}, s23 = {0, 0};
-    for (; i + 4 <= end; i += 4) {
-      Pair x01, x23, y01, y23;
-      std::memcpy(&x01, x + i, sizeof(Pair));
-      std::memcpy(&x23, x + i + 2, sizeof(Pair));
-      std::memcpy(&y01, y + i, sizeof(Pair));
-      std::memcpy(&y23, y + i + 2, sizeof(Pair));
-      s01 += x01 * y01;
-      s23 += x23 * y23;
+    if constexpr (Wide) { // lane l sums the products l mod 4
+      typedef double Quad __attribute__((vector_size(32)));
+      Quad s = {0, 0, 0, 0};
+      for (; i + 4 <= end; i += 4) {
+        Quad xv, yv;
+        std::memcpy(&xv, x + i, sizeof(Quad));
+        std::memcpy(&yv, y + i, sizeof(Quad));
+        s += xv * yv;
+      }
+      s0 = s[0];
+      s1 = s[1];
+      s2 = s[2];
+      s3 = s[3];
+    } else {
+      typedef double Pair __attribute__((vector_size(16)));
+      Pair s01 = {0, 0}, s23 = {0, 0};
+      for (; i + 4 <= end; i += 4) {
+        Pair x01, x23, y01, y23;
+        std::memcpy(&x01, x + i, sizeof(Pair));
+        std::memcpy(&x23, x + i + 2, sizeof(Pair));
+        std::memcpy(&y01, y + i, sizeof(Pair));
+        std::memcpy(&y23, y + i + 2, sizeof(Pair));
+        s01 += x01 * y01;
+        s23 += x23 * y23;
+      }
+      s0 = s01[0];
+      s1 = s01[1];
+      s2 = s23[0];
+      s3 = s23[1];
     }
-    s0 = s01[0];
-    s1 = s01[1];
-    s2 = s23[0];
-    s3 = s23[1];
 #else
     for (; i + 4 <= end; i += 4) {
       s0 += x[i] * y[i];
@@ -637,40 +681,65 @@ private:
       s0 += x[i] * y[i];
     return (s0 + s1) + (s2 + s3);
   }
-  // x[i] -= f a[i] over [begin, end), two lanes at a time where the compiler allows (its own
-  // vectorisation of these short loops of varying start spent more on peeling than on work).
-  static void subtract_multiple(double* x, const double* a, double f, std::size_t begin,
-                                std::size_t end) {
+#if defined(__GNUC__)
+  // The loops below over whole vectors of `Bytes` (16: SSE2, 32: AVX2 or two SSE2
+  // registers), from i on; each lane does the scalar loop's operations.
+  template <std::size_t Bytes>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE static void
+  subtract_multiple_lanes(double* x, const double* a, double f, std::size_t& i, std::size_t end) {
+    typedef double Lanes __attribute__((vector_size(Bytes)));
+    constexpr std::size_t L = Bytes / sizeof(double);
+    const Lanes ff = Lanes{} + f;
+    for (; i + L <= end; i += L) {
+      Lanes xv, av;
+      std::memcpy(&xv, x + i, sizeof(Lanes));
+      std::memcpy(&av, a + i, sizeof(Lanes));
+      xv -= ff * av;
+      std::memcpy(x + i, &xv, sizeof(Lanes));
+    }
+  }
+  template <std::size_t Bytes>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE static void
+  subtract_two_multiples_lanes(double* y, const double* a0, double r0, const double* a1, double r1,
+                               std::size_t& i, std::size_t n) {
+    typedef double Lanes __attribute__((vector_size(Bytes)));
+    constexpr std::size_t L = Bytes / sizeof(double);
+    const Lanes rr0 = Lanes{} + r0, rr1 = Lanes{} + r1;
+    for (; i + L <= n; i += L) {
+      Lanes yv, v0, v1;
+      std::memcpy(&yv, y + i, sizeof(Lanes));
+      std::memcpy(&v0, a0 + i, sizeof(Lanes));
+      std::memcpy(&v1, a1 + i, sizeof(Lanes));
+      yv = (yv - rr0 * v0) - rr1 * v1;
+      std::memcpy(y + i, &yv, sizeof(Lanes));
+    }
+  }
+#endif
+  // x[i] -= f a[i] over [begin, end), four (Wide) then two lanes at a time where the compiler
+  // allows (its own vectorisation of these short loops of varying start spent more on
+  // peeling than on work).
+  template <bool Wide>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE static void
+  subtract_multiple(double* x, const double* a, double f, std::size_t begin, std::size_t end) {
     std::size_t i = begin;
 #if defined(__GNUC__)
-    typedef double Pair __attribute__((vector_size(16)));
-    const Pair ff = {f, f};
-    for (; i + 2 <= end; i += 2) {
-      Pair xv, av;
-      std::memcpy(&xv, x + i, sizeof(Pair));
-      std::memcpy(&av, a + i, sizeof(Pair));
-      xv -= ff * av;
-      std::memcpy(x + i, &xv, sizeof(Pair));
-    }
+    if constexpr (Wide)
+      subtract_multiple_lanes<32>(x, a, f, i, end);
+    subtract_multiple_lanes<16>(x, a, f, i, end);
 #endif
     for (; i < end; ++i)
       x[i] -= f * a[i];
   }
   // y[i] = (y[i] - r0 a0[i]) - r1 a1[i] over [0, n): two subtractions per pass, in order.
-  static void subtract_two_multiples(double* y, const double* a0, double r0, const double* a1,
-                                     double r1, std::size_t n) {
+  template <bool Wide>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE static void
+  subtract_two_multiples(double* y, const double* a0, double r0, const double* a1, double r1,
+                         std::size_t n) {
     std::size_t i = 0;
 #if defined(__GNUC__)
-    typedef double Pair __attribute__((vector_size(16)));
-    const Pair rr0 = {r0, r0}, rr1 = {r1, r1};
-    for (; i + 2 <= n; i += 2) {
-      Pair yv, v0, v1;
-      std::memcpy(&yv, y + i, sizeof(Pair));
-      std::memcpy(&v0, a0 + i, sizeof(Pair));
-      std::memcpy(&v1, a1 + i, sizeof(Pair));
-      yv = (yv - rr0 * v0) - rr1 * v1;
-      std::memcpy(y + i, &yv, sizeof(Pair));
-    }
+    if constexpr (Wide)
+      subtract_two_multiples_lanes<32>(y, a0, r0, a1, r1, i, n);
+    subtract_two_multiples_lanes<16>(y, a0, r0, a1, r1, i, n);
 #endif
     for (; i < n; ++i)
       y[i] = (y[i] - r0 * a0[i]) - r1 * a1[i];
@@ -696,8 +765,10 @@ private:
 
   // Factorizes the weighted design of degree `d` on the first `n` points into `g`;
   // false if the points have no extent.
-  bool factorize(Index v, const std::vector<Value>& values, const std::vector<Index>& points, int d,
-                 std::size_t n, Workspace& work, Group& g) const {
+  template <bool Wide>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE bool
+  factorize(Index v, const std::vector<Value>& values, const std::vector<Index>& points, int d,
+            std::size_t n, Workspace& work, Group& g) const {
     const Domain& domain = *m_domain;
     const Point_2& center = domain.point(v);
     const double cx = CGAL::to_double(center.x()), cy = CGAL::to_double(center.y());
@@ -750,8 +821,8 @@ private:
     for (int k = 0; k < u; ++k) {
       double* a = A + std::size_t(k) * n;
       const double* original = work.original.data() + std::size_t(k) * n;
-      const double norm2 = dot(original, original, 0, n);
-      const double below2 = dot(a, a, std::size_t(k), n);
+      const double norm2 = dot<Wide>(original, original, 0, n);
+      const double below2 = dot<Wide>(a, a, std::size_t(k), n);
       const double sigma = std::sqrt(below2);
       const double ratio = norm2 > 0 ? sigma / std::sqrt(norm2) : 0;
       if (!(ratio > 1e-14))
@@ -761,13 +832,14 @@ private:
       const double alpha = a[k] > 0 ? -sigma : sigma;
       a[k] -= alpha;
       const double beta = sigma * std::abs(a[k]); // v^T v / 2
-      auto reflect = [&](double* x) {
-        subtract_multiple(x, a, dot(a, x, std::size_t(k), n) / beta, std::size_t(k), n);
-      };
-      for (int j = k + 1; j < u; ++j)
-        reflect(A + std::size_t(j) * n);
-      for (int j = 0; j < D; ++j)
-        reflect(b + std::size_t(j) * n);
+      for (int j = k + 1; j < u; ++j) {
+        double* x = A + std::size_t(j) * n;
+        subtract_multiple<Wide>(x, a, dot<Wide>(a, x, std::size_t(k), n) / beta, std::size_t(k), n);
+      }
+      for (int j = 0; j < D; ++j) {
+        double* x = b + std::size_t(j) * n;
+        subtract_multiple<Wide>(x, a, dot<Wide>(a, x, std::size_t(k), n) / beta, std::size_t(k), n);
+      }
       for (int i = 0; i < k; ++i)
         g.R[std::size_t(k) * max_columns + std::size_t(i)] = A[std::size_t(k) * n + std::size_t(i)];
       g.R[std::size_t(k) * max_columns + std::size_t(k)] = alpha;
@@ -787,9 +859,10 @@ private:
   // (weighted least squares: residual r_i / (1 - h_ii), h the hat matrix Q Q^T; the rows of
   // Q are those of A R^-1): the weighted mean square of the left-out residuals, infinite
   // where a point's leverage is 1.
-  template <std::size_t N>
-  void scores(const Group& g, const std::array<int, N>& u, std::size_t count, Workspace& work,
-              std::array<double, N>& score) const {
+  template <bool Wide, std::size_t N>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE void scores(const Group& g, const std::array<int, N>& u,
+                                                   std::size_t count, Workspace& work,
+                                                   std::array<double, N>& score) const {
     const std::size_t n = g.n;
     const int last = u[count - 1];
     // Y = A R^-1 column by column (each column an update of contiguous point vectors), with
@@ -810,11 +883,12 @@ private:
       for (; l + 2 <= j; l += 2) {
         const double r0 = g.R[std::size_t(j) * max_columns + std::size_t(l)];
         const double r1 = g.R[std::size_t(j) * max_columns + std::size_t(l + 1)];
-        subtract_two_multiples(y, Y + std::size_t(l) * n, r0, Y + std::size_t(l + 1) * n, r1, n);
+        subtract_two_multiples<Wide>(y, Y + std::size_t(l) * n, r0, Y + std::size_t(l + 1) * n, r1,
+                                     n);
       }
       if (l < j)
-        subtract_multiple(y, Y + std::size_t(l) * n,
-                          g.R[std::size_t(j) * max_columns + std::size_t(l)], 0, n);
+        subtract_multiple<Wide>(y, Y + std::size_t(l) * n,
+                                g.R[std::size_t(j) * max_columns + std::size_t(l)], 0, n);
       const double inverse = 1 / g.R[std::size_t(j) * max_columns + std::size_t(j)];
       for (std::size_t i = 0; i < n; ++i) {
         y[i] *= inverse;
@@ -949,7 +1023,9 @@ private:
     return largest;
   }
 
-  void fit_vertex(Index v, const std::vector<Value>& values, Workspace& work) {
+  template <bool Wide>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE void fit_vertex(Index v, const std::vector<Value>& values,
+                                                       Workspace& work) {
     coefficient(v, 0, 0) = values[v];
     if (m_max_degree == 0)
       return;
@@ -979,7 +1055,7 @@ private:
       groups.emplace_back();
       Group& g = groups.back();
       g.on_ring = d == 1;
-      if (!factorize(v, values, points, top, n, work, g)) {
+      if (!factorize<Wide>(v, values, points, top, n, work, g)) {
         groups.pop_back();
         break; // no extent: no higher degree either
       }
@@ -1001,7 +1077,7 @@ private:
       const bool plane = g.columns >= 2;
       std::array<double, max_supported_degree + 1> s{};
       if (plane)
-        scores(g, u, count, work, s);
+        scores<Wide>(g, u, count, work, s);
       // Points on few lines do not determine the group's top degree (a quintic needs them on
       // six), and with 1.5 points per unknown one of them may fit a direction alone (its
       // leave-one-out residual is then undefined, the score infinite): then twice the points,
@@ -1011,14 +1087,15 @@ private:
         Group more;
         const std::size_t n2 = (std::min)(points.size(), 2 * n);
         order_nearest(n2, work);
-        if (factorize(v, values, points, top, n2, work, more) && determined(more, unknowns(top))) {
+        if (factorize<Wide>(v, values, points, top, n2, work, more) &&
+            determined(more, unknowns(top))) {
           std::array<int, max_supported_degree + 1> u2{};
           std::size_t count2 = 0;
           u2[count2++] = 2;
           for (int e = (std::max)(d, 2); e <= top && determined(more, unknowns(e)); ++e)
             u2[count2++] = unknowns(e);
           std::array<double, max_supported_degree + 1> s2{};
-          scores(more, u2, count2, work, s2);
+          scores<Wide>(more, u2, count2, work, s2);
           if (std::isfinite(s2[count2 - 1])) {
             g = more;
             u = u2;
