@@ -3806,6 +3806,57 @@ TEST(Certificate, FastExactVerdictsAgreeWithTheFullCheckEdgeByEdge) {
   }
 }
 
+// The fast exact test with its determinants in integers (the coordinates scaled by the
+// least common multiples of their denominators, internal::integer_points()) gives the
+// rational test's verdict on every edge: propagated splines (ZERO) and copies with stale
+// values (NOT_ZERO), on the test domains (dyadic and small denominators) and on one mapped
+// to denominators 3, 7 and 11. Where the multiples exceed the bound the points are not
+// usable and the rational test runs.
+TEST(Certificate, IntegerDeterminantsGiveTheRationalVerdicts) {
+  using K = Exact_kernel;
+  using FT = K::FT;
+  Random_rationals random(17);
+  auto domains = all_domains<K>();
+  {
+    const auto& d = domains.front().second;
+    std::vector<K::Point_2> mapped;
+    for (const auto& p : d.points())
+      mapped.emplace_back(p.x() / FT(3) + FT(1) / FT(7), p.y() / FT(11));
+    domains.emplace_back("mapped to thirds, sevenths, elevenths",
+                         Planar_domain<K>(mapped, d.faces()));
+  }
+  std::size_t zero = 0, not_zero = 0;
+  for (const auto& [name, domain] : domains) {
+    const TS::internal::Integer_points points = TS::internal::integer_points(domain);
+    ASSERT_TRUE(points.usable) << name;
+    bool integral = true; // a bound of one bit leaves only integer coordinates usable
+    for (const auto& p : domain.points())
+      integral = integral && p.x().get_den() == 1 && p.y().get_den() == 1;
+    EXPECT_EQ(TS::internal::integer_points(domain, 1).usable, integral) << name;
+    C1_quintic_spline<K> spline(domain);
+    randomize(spline, random);
+    auto compare = [&](const C1_quintic_spline<K>& network) {
+      for (Index e = 0; e < domain.number_of_edges(); ++e) {
+        if (domain.is_boundary_edge(e))
+          continue;
+        const auto integer = TS::internal::fast_exact_C1_join(network, e, &points);
+        EXPECT_EQ(integer, TS::internal::fast_exact_C1_join(network, e)) << name << " " << e;
+        zero += integer == TS::internal::Fast_join::ZERO ? 1 : 0;
+        not_zero += integer == TS::internal::Fast_join::NOT_ZERO ? 1 : 0;
+      }
+    };
+    compare(spline);
+    const auto free = free_list(spline);
+    for (std::size_t i = 0; i < free.size(); i += 7) {
+      C1_quintic_spline<K> copy = spline;
+      copy.set_free_value(free[i], spline.value(free[i]) + FT(1, 1000003));
+      compare(copy);
+    }
+  }
+  EXPECT_GT(zero, 1000u);
+  EXPECT_GT(not_zero, 100u);
+}
+
 // The double certificate's slot-based check (internal::fast_double_C1_join) gives the very
 // bits of check_C1_join_in_larger_frame() on the two patches, edge by edge, on propagated
 // splines and on copies with stale control values, at tolerance 0 (round-off fails) and at

@@ -176,7 +176,8 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
   certificate.tolerance = tolerance > 0 ? tolerance : 0;
   certificate.lowest_order = k;
   // Slot networks of degree 5 (C1_quintic_spline) with heights: exact ones are decided on
-  // the slots by internal::fast_exact_C1_join(), an exact test without patches or gcds;
+  // the slots by internal::fast_exact_C1_join(), an exact test without patches or gcds (its
+  // determinants in integers where internal::integer_points() can scale the coordinates);
   // double ones get the full check's residuals read on the slots
   // (internal::fast_double_C1_join()). Only the edges these leave open go through
   // check_C1_join() on two patches.
@@ -195,12 +196,18 @@ certify_continuity(const TriangularSplineNetwork& network, int k,
   bool use_fast = false;
   if constexpr (fast_exact || fast_double)
     use_fast = k == 1 && conditions == Join_conditions::EXTENSION && network.degree() == 5;
+  // The points in integers for the fast exact test, where their denominators allow.
+  internal::Integer_points points;
+  if constexpr (fast_exact)
+    if (use_fast)
+      points = internal::integer_points(domain);
   // The edges are independent: checked on all cores (exact checks only on the fast path, the
   // others allocate), the verdicts collected in edge order.
   auto check = [&](Index e, Edge_certificate& c) {
     const auto& ef = domain.edge_faces(e);
     if constexpr (fast_exact) {
-      if (use_fast && internal::fast_exact_C1_join(network, e) == internal::Fast_join::ZERO) {
+      if (use_fast &&
+          internal::fast_exact_C1_join(network, e, &points) == internal::Fast_join::ZERO) {
         c.edge = e;
         c.vertices = {{domain.edge(e)[0], domain.edge(e)[1]}};
         c.achieved_order = 1;
