@@ -216,7 +216,8 @@ Fast_join fast_exact_C1_join(const Network& network, Index e,
       return Fast_join::NOT_ZERO;
   }
   thread_local Exact_zero_sum<FT> sum;
-  // the four conditions D b_q - W_p a_p - W_r a_r - W_s a_s == 0, coefficients of type C
+  // the four conditions D b_q - W_p a_p - W_r a_r - W_s a_s == 0 (rational determinants, or
+  // integer ones scaled by a common positive factor)
   auto conditions = [&](const auto& D, const auto& Wp, const auto& Wr, const auto& Ws) {
     // q strictly on the other side of rs than p: its coordinate at p is negative.
     if (join_sign(Wp) * join_sign(D) >= 0)
