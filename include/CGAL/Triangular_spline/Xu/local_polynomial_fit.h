@@ -380,21 +380,25 @@ private:
       worker.join();
   }
   // Fits vertex_at(i) for i = first, first + step, ... below n (one thread's share). The
-  // double kernels are inlined into it: fit_every_avx2() is the same loop compiled for AVX2
-  // (internal/avx2_clones.h; the same bits at 0.8 times the fits' time).
-  template <class Vertex_at>
-  void fit_every(std::size_t first, std::size_t step, std::size_t n, const Vertex_at& vertex_at) {
+  // double kernels are inlined into it; fit_every() and fit_every_avx2() compile it for
+  // SSE2 and for AVX2 (internal/avx2_clones.h: the same bits, the kernels in 0.8 times the
+  // time).
+  template <bool Wide, class Vertex_at>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE void fit_share(std::size_t first, std::size_t step,
+                                                      std::size_t n, const Vertex_at& vertex_at) {
     Workspace work;
     for (std::size_t i = first; i < n; i += step)
-      fit_vertex<false>(vertex_at(i), *m_data, work);
+      fit_vertex<Wide>(vertex_at(i), *m_data, work);
+  }
+  template <class Vertex_at>
+  void fit_every(std::size_t first, std::size_t step, std::size_t n, const Vertex_at& vertex_at) {
+    fit_share<false>(first, step, n, vertex_at);
   }
 #if CGAL_TRIANGULAR_SPLINE_AVX2_CLONES
   template <class Vertex_at>
   CGAL_TRIANGULAR_SPLINE_AVX2_TARGET void
   fit_every_avx2(std::size_t first, std::size_t step, std::size_t n, const Vertex_at& vertex_at) {
-    Workspace work;
-    for (std::size_t i = first; i < n; i += step)
-      fit_vertex<true>(vertex_at(i), *m_data, work);
+    fit_share<true>(first, step, n, vertex_at);
   }
 #endif
   static constexpr int D = Value_traits<Value>::dimension;
@@ -630,9 +634,9 @@ private:
   // sum x[i] y[i] over [begin, end), in four interleaved partial sums: without them the
   // compiler may not reorder the additions, and one chain of dependent adds is four times
   // slower (the order is fixed, so the result does not depend on the machine's load).
-  // GCC and Clang: the four sums as one vector of four lanes (two SSE2 registers, or one
-  // AVX2 register in fit_every_avx2()), the same operations on every lane (the same bits),
-  // which the compiler does not find itself (half the instructions of the fits went here).
+  // GCC and Clang: the four sums as two vectors of two lanes (SSE2), or one of four lanes
+  // (Wide: the AVX2 clone), the same operations on every lane (the same bits), which the
+  // compiler does not find itself (half the instructions of the fits went here).
   template <bool Wide>
   CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE static double dot(const double* x, const double* y,
                                                          std::size_t begin, std::size_t end) {
