@@ -86,12 +86,17 @@ std::string one_line(std::string text) {
 // GLIBC_TUNABLES at start-up only, hence the exec). A c1 run at 10^6 points touches 1.4 GB:
 // - hugetlb=1: large blocks on transparent huge pages; on 4 KB pages the faults and TLB
 //   misses cost 8% of the CPU (paired runs: 34.0 s against 36.9 s);
-// - a fixed mmap threshold of 4 MB and a trim threshold of 32 MB: freed large blocks go back
-//   to the system instead of being kept by glibc's dynamic threshold (about 100 MB of the
-//   peak at 10^6 points: 1318 against 1394 MB), while the global fits' windows, which
-//   allocate and free blocks of a few hundred KB thousands of times, reuse the heap. A 128 KB
-//   threshold with no trimming cost them 2.5 to 3 times the CPU in page faults and
-//   mmap/munmap (energy fit at 10^5 points: 91 s against 31 s).
+// - a fixed mmap threshold of 4 MB: freed large blocks go back to the system instead of
+//   being kept by glibc's dynamic threshold (about 100 MB of the peak at 10^6 points: 1318
+//   against 1394 MB), while the global fits' windows, which allocate and free blocks of a
+//   few hundred KB thousands of times, reuse the heap. A 128 KB threshold with no trimming
+//   cost them 2.5 to 3 times the CPU in page faults and mmap/munmap (energy fit at 10^5
+//   points: 91 s against 31 s);
+// - a trim threshold of 1 GB: the heap keeps what it freed below that. Exact builds free and
+//   reallocate their GMP integers' heap phase after phase; trimmed at 32 MB, the heap went
+//   back to the system and every regrowth was faulted in again as zeroed huge pages (10^5
+//   17-digit points, --exact: 0.94-1.11 s of system time against 0.47-0.51 s, four pairs).
+//   Peaks and double runs did not change (10^6 points: 611 MB either way).
 // Tunables of malloc the user set (any glibc.malloc.*, e.g. glibc.malloc.hugetlb=0 to keep
 // a run under valgrind or heaptrack in one process) are kept as they are; where the exec
 // fails, the run goes on as it is.
@@ -103,7 +108,7 @@ void tune_malloc(char* argv[]) {
     return;
   value += std::string(value.empty() ? "" : ":") +
            "glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=4194304:"
-           "glibc.malloc.trim_threshold=33554432";
+           "glibc.malloc.trim_threshold=1073741824";
   if (setenv("GLIBC_TUNABLES", value.c_str(), 1) == 0)
     execv("/proc/self/exe", argv);
 #else

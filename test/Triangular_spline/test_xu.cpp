@@ -463,6 +463,99 @@ TEST(Spline, ExactBarycentricWeightsInIntegersEqualTheRationalFormula) {
   EXPECT_EQ(small_paths[3], 0); // too large: the general path
 }
 
+#if defined(__SIZEOF_INT128__)
+TEST(Spline, BinaryGcdOf128BitIntegersIsGmpsGcd) {
+  // gcd_128() reduces the exact plan's weights: it must be GMP's gcd on values across the
+  // 64-bit boundary (the loop changes word size there), with zeros, equal values, powers of
+  // two, shared factors above 2^64 and random determinants of 17-digit decimal coordinates.
+  using U = unsigned __int128;
+  auto to_mpz = [](U v) -> mpz_class {
+    mpz_class z = static_cast<unsigned long>(std::uint64_t(v >> 64));
+    z <<= 64;
+    return z + static_cast<unsigned long>(std::uint64_t(v));
+  };
+  auto check = [&](U a, U b) {
+    mpz_class g;
+    mpz_gcd(g.get_mpz_t(), to_mpz(a).get_mpz_t(), to_mpz(b).get_mpz_t());
+    ASSERT_EQ(to_mpz(TS::internal::gcd_128(a, b)), g)
+        << to_mpz(a).get_str() << " " << to_mpz(b).get_str();
+  };
+  const U two64 = U(1) << 64, top = ~U(0);
+  const std::vector<U> special = {1,
+                                  2,
+                                  3,
+                                  6,
+                                  two64 - 1,
+                                  two64,
+                                  two64 + 1,
+                                  two64 * 3,
+                                  U(1) << 127,
+                                  top,
+                                  top - 1,
+                                  top / 3,
+                                  (two64 + 1) * 999999937,
+                                  (two64 - 59) * 5,
+                                  U(1000000000000000000ull) * 1000000000000000000ull};
+  for (U a : special) {
+    check(a, 0);
+    check(0, a);
+    for (U b : special)
+      check(a, b);
+  }
+  std::mt19937_64 engine(11);
+  std::uniform_int_distribution<std::uint64_t> digits(0, 99999999999999999ull);
+  for (int trial = 0; trial < 20000; ++trial) {
+    using I = __int128;
+    std::array<I, 6> x;
+    for (I& v : x)
+      v = I(digits(engine));
+    const I d = (x[2] - x[0]) * (x[5] - x[1]) - (x[3] - x[1]) * (x[4] - x[0]);
+    const I n = (x[4] - x[0]) * (x[3] - x[1]) - (x[5] - x[1]) * (x[2] - x[0]) + (trial % 7);
+    const U common = U(1) << (trial % 5) | U(trial % 3 == 0 ? 3 : 1);
+    check((d < 0 ? U(-d) : U(d)) / 8 * common, (n < 0 ? U(-n) : U(n)) / 8 * common);
+  }
+}
+#endif
+
+TEST(Spline, DifferenceConvertedUnreducedIsTheConvertedDifference) {
+  // The plan's frame choice converts coordinate differences with
+  // to_double_of_difference(), from an unreduced fraction: it must be the very double of
+  // the reduced difference (mpq_get_d() truncates the value), for equal and unequal
+  // denominators, 17-digit decimals, long denominators, values of any sign and size, and
+  // equal values (zero).
+  using FT = Exact_kernel::FT;
+  std::mt19937_64 engine(7);
+  std::uniform_int_distribution<long> digits(-999999999999999999L, 999999999999999999L);
+  std::uniform_int_distribution<int> exponent(-25, 5), kind(0, 3);
+  auto number = [&]() -> FT {
+    switch (kind(engine)) {
+    case 0: { // an 18-digit decimal, 0 to 30 digits after the point
+      mpz_class scale;
+      mpz_ui_pow_ui(scale.get_mpz_t(), 10, static_cast<unsigned long>(exponent(engine) + 25));
+      return FT(digits(engine)) / FT(scale);
+    }
+    case 1: { // a decimal of a fixed scale: equal denominators
+      FT d(digits(engine));
+      return d / FT(1000000000000000000.0);
+    }
+    case 2: // long odd denominators
+      return FT(digits(engine)) / FT(digits(engine) | 1) / FT(999999937);
+    default: // a double
+      return FT(std::ldexp(double(digits(engine)), exponent(engine) * 3));
+    }
+  };
+  int zero = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const FT a = number();
+    const FT b = trial % 97 == 0 ? a : number();
+    const double expected = CGAL::to_double(FT(b - a));
+    const double got = TS::internal::to_double_of_difference(b, a);
+    ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0) << b << " - " << a;
+    zero += got == 0;
+  }
+  EXPECT_GE(zero, 200);
+}
+
 TEST(Spline, DoubleValuesDoNotDependOnTheVertexNumbering) {
   // The same points and triangles, vertices renumbered at random and faces shuffled and
   // rotated: the plan and every control value, free or propagated, must come out with the
@@ -842,6 +935,12 @@ TEST(Plan, FilteredOrientationIsTheExactOrientation) {
     const CGAL::Orientation exact = traits.orientation_2_object()(p, q, r);
     EXPECT_EQ(TS::internal::filtered_orientation(traits, p, q, r), exact)
         << p << " | " << q << " | " << r;
+    // from enclosures converted beforehand (what Planar_domain::orientation() passes)
+    EXPECT_EQ(TS::internal::filtered_orientation(traits, p, q, r, TS::internal::enclose_point(p),
+                                                 TS::internal::enclose_point(q),
+                                                 TS::internal::enclose_point(r)),
+              exact)
+        << p << " | " << q << " | " << r;
     ++seen[std::size_t(int(exact) + 1)];
   };
   const FT tiny = FT(1) / FT(std::ldexp(1.0, 1000)) / FT(std::ldexp(1.0, 80));
@@ -864,6 +963,40 @@ TEST(Plan, FilteredOrientationIsTheExactOrientation) {
   EXPECT_GT(seen[0], 3000u);
   EXPECT_GT(seen[1], 3000u);
   EXPECT_GT(seen[2], 3000u);
+}
+
+// Planar_domain::orientation() decides from the coordinates' enclosures, converted once when
+// the domain is built (GMP rationals only): on a grid, where many triples are exactly
+// collinear, with rational coordinates of long denominators and 1e-40 offsets, it must be the
+// exact orientation of every triple of vertices, in both kernels.
+TEST(Domain, OrientationOfVerticesIsTheExactOrientation) {
+  auto check = [](const auto& domain) {
+    const auto orientation = domain.geom_traits().orientation_2_object();
+    const auto n = static_cast<std::uint32_t>(domain.number_of_vertices());
+    std::array<std::size_t, 3> seen{};
+    for (std::uint32_t u = 0; u < n; u += 3)
+      for (std::uint32_t v = 1; v < n; v += 2)
+        for (std::uint32_t w = 2; w < n; w += 5) {
+          const CGAL::Orientation exact =
+              orientation(domain.point(u), domain.point(v), domain.point(w));
+          ASSERT_EQ(domain.orientation(u, v, w), exact) << u << " " << v << " " << w;
+          ++seen[std::size_t(int(exact) + 1)];
+        }
+    EXPECT_GT(seen[0], 100u);
+    EXPECT_GT(seen[1], 100u);
+    EXPECT_GT(seen[2], 100u);
+  };
+  using K = Exact_kernel;
+  using FT = K::FT;
+  const Planar_domain<K> plain = grid<K>(12, false);
+  check(plain);
+  check(grid<Epick>(12, false));
+  // the same grid mapped by x -> x / 7 + 10^-40 y, y -> y / 3: collinear triples stay so
+  const FT nudge = FT(1) / FT(std::ldexp(1.0, 133));
+  std::vector<K::Point_2> mapped;
+  for (const auto& p : plain.points())
+    mapped.emplace_back(p.x() / FT(7) + nudge * p.y(), p.y() / FT(3));
+  check(Planar_domain<K>(mapped, plain.faces()));
 }
 
 // The domain's checks run face by face and vertex by vertex on all cores for exact kernels

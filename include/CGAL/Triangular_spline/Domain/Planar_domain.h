@@ -82,6 +82,7 @@ public:
   Planar_domain(std::vector<Point_2> points, std::vector<std::array<Index, 3>> triangles,
                 const Geom_traits& traits = Geom_traits(), bool check_overlaps = true)
       : m_points(std::move(points)), m_faces(std::move(triangles)), m_traits(traits) {
+    enclose_points();
     validate_and_orient();
     build_edges();
     build_stars();
@@ -140,6 +141,19 @@ public:
   /// returns the points of all vertices, indexed by vertex
   /// \returns the points of all vertices, indexed by vertex
   const std::vector<Point_2>& points() const { return m_points; }
+  /// returns the orientation of the points of vertices `u`, `v` and `w` (`CGAL::LEFT_TURN`
+  /// if they turn counter-clockwise), decided exactly. With GMP's rationals it first tries
+  /// intervals around each coordinate, converted to `double` once when the domain was built.
+  /// \param u the index of a vertex
+  /// \param v the index of a vertex
+  /// \param w the index of a vertex
+  /// \returns the orientation of the three points
+  CGAL::Orientation orientation(Index u, Index v, Index w) const {
+    if (m_enclosures.empty())
+      return internal::filtered_orientation(m_traits, m_points[u], m_points[v], m_points[w]);
+    return internal::filtered_orientation(m_traits, m_points[u], m_points[v], m_points[w],
+                                          m_enclosures[u], m_enclosures[v], m_enclosures[w]);
+  }
   /// returns the vertices of face `f`, counter-clockwise
   /// \param f the index of a face
   /// \returns the vertices of face `f`, counter-clockwise
@@ -225,6 +239,20 @@ private:
     return "vertex " + std::to_string(v) + " " + internal::point_to_string(m_points[v]);
   }
 
+  // Intervals around the coordinates, for orientation(), where the number type converts
+  // with a division (GMP's rationals): each point's once, on all cores, instead of six
+  // divisions per test (a tenth of the CPU of an exact build of 10^5 17-digit points went to
+  // the conversions).
+  void enclose_points() {
+    if constexpr (internal::has_orientation_filter<FT>()) {
+      const std::size_t n = m_points.size();
+      m_enclosures.resize(n);
+      internal::parallel_for_index(n, internal::thread_count(n, 20000), [this](std::size_t v) {
+        m_enclosures[v] = internal::enclose_point(m_points[v]);
+      });
+    }
+  }
+
   void validate_and_orient() {
     if (m_faces.empty())
       throw Invalid_input("domain: no triangle");
@@ -247,9 +275,6 @@ private:
                             std::to_string(order[i]) + " are the same point " +
                             internal::point_to_string(m_points[order[i]]));
     // Each face on its own, on all cores; the error of the first bad face, as in face order.
-    auto orientation = [this](const Point_2& p, const Point_2& q, const Point_2& r) {
-      return internal::filtered_orientation(m_traits, p, q, r); // exact, intervals first
-    };
     internal::parallel_for_index(
         m_faces.size(), checking_threads(m_faces.size()), [&](std::size_t f) {
           auto& t = m_faces[f];
@@ -259,7 +284,7 @@ private:
                                   std::to_string(v) + " but there are only " + std::to_string(n));
           if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
             throw Invalid_input("domain: triangle " + std::to_string(f) + " repeats a vertex");
-          const CGAL::Orientation o = orientation(m_points[t[0]], m_points[t[1]], m_points[t[2]]);
+          const CGAL::Orientation o = orientation(t[0], t[1], t[2]);
           if (o == CGAL::COLLINEAR)
             throw Invalid_input("domain: triangle " + std::to_string(f) + " (" +
                                 std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
@@ -465,9 +490,6 @@ private:
     // The fan must turn once (interior) or less than once (boundary): no later cone may
     // contain the direction of the first neighbour (exact orientation tests). Vertex by
     // vertex on all cores, once every fan is built: the error of the first bad vertex.
-    auto orientation = [this](const Point_2& p, const Point_2& q, const Point_2& r) {
-      return internal::filtered_orientation(m_traits, p, q, r); // exact, intervals first
-    };
     internal::parallel_for_index(n, checking_threads(n), [&](std::size_t vi) {
       const Index v = static_cast<Index>(vi);
       const auto [nb, ne] = neighbours(v);
@@ -477,18 +499,17 @@ private:
       auto ordered = m_traits.collinear_are_ordered_along_line_2_object();
       for (std::size_t i = 1; i + 1 < degree; ++i) {
         // Half-open cone [a, b) of the counter-clockwise turn from a to b (< pi).
-        const Point_2& a = m_points[nb[i]];
-        const Point_2& b = m_points[nb[(i + 1) % degree]];
-        const CGAL::Orientation from_a = orientation(c, a, w0);
-        const bool after_a =
-            from_a == CGAL::LEFT_TURN || (from_a == CGAL::COLLINEAR && !ordered(a, c, w0));
-        if (after_a && orientation(c, w0, b) == CGAL::LEFT_TURN)
+        const Index a = nb[i], b = nb[(i + 1) % degree];
+        const CGAL::Orientation from_a = orientation(v, a, nb[0]);
+        const bool after_a = from_a == CGAL::LEFT_TURN ||
+                             (from_a == CGAL::COLLINEAR && !ordered(m_points[a], c, w0));
+        if (after_a && orientation(v, nb[0], b) == CGAL::LEFT_TURN)
           throw Invalid_input("domain: the triangles around " + vertex_name(v) +
                               " overlap (they turn more than once around it)");
       }
       if (m_vertex_boundary[v]) {
         const Point_2& last = m_points[nb[degree - 1]];
-        if (orientation(c, last, w0) == CGAL::COLLINEAR && !ordered(w0, c, last))
+        if (orientation(v, nb[degree - 1], nb[0]) == CGAL::COLLINEAR && !ordered(w0, c, last))
           throw Invalid_input("domain: the triangles around " + vertex_name(v) +
                               " close up without closing (a slit)");
       }
@@ -533,14 +554,13 @@ private:
       for (Index b : G)
         if (a == b)
           return;
-    auto orientation = m_traits.orientation_2_object();
     // side[i][k]: where vertex k of `B` lies relative to edge (i, i+1) of `A` (counter-
     // clockwise, so the interior of A is on the left).
     auto sides = [&](const std::array<Index, 3>& A, const std::array<Index, 3>& B) {
       std::array<std::array<CGAL::Orientation, 3>, 3> side;
       for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t k = 0; k < 3; ++k)
-          side[i][k] = orientation(m_points[A[i]], m_points[A[(i + 1) % 3]], m_points[B[k]]);
+          side[i][k] = orientation(A[i], A[(i + 1) % 3], B[k]);
       return side;
     };
     // Interiors are disjoint iff some edge line of either triangle leaves the other one in
@@ -581,6 +601,7 @@ private:
   }
 
   std::vector<Point_2> m_points;
+  std::vector<internal::Point_enclosure> m_enclosures; // (empty: the number type needs none)
   std::vector<std::array<Index, 3>> m_faces;
   Geom_traits m_traits;
   std::vector<std::array<Index, 2>> m_edges;

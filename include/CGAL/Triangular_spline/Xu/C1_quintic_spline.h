@@ -1130,18 +1130,18 @@ private:
   std::array<std::size_t, 3> choose_frame(Index v) const {
     const auto [nb, ne] = m_domain.neighbours(v);
     const std::size_t d = static_cast<std::size_t>(ne - nb);
+    auto vertex_of = [&](std::size_t k) { return k == 0 ? v : nb[k - 1]; };
+    auto point_of = [&](std::size_t k) -> const Point_2& { return m_domain.point(vertex_of(k)); };
     // Orientation, not collinear_2: the same exact test, statically filtered by Epick (by
-    // intervals for GMP rationals: internal::filtered_orientation()).
-    auto collinear = [&](const Point_2& a, const Point_2& b, const Point_2& c) {
-      return internal::filtered_orientation(m_domain.geom_traits(), a, b, c) == CGAL::COLLINEAR;
-    };
-    auto point_of = [&](std::size_t k) -> const Point_2& {
-      return k == 0 ? m_domain.point(v) : m_domain.point(nb[k - 1]);
+    // intervals around the domain's coordinates for GMP rationals).
+    auto collinear = [&](std::size_t i, std::size_t j, std::size_t k) {
+      return m_domain.orientation(vertex_of(i), vertex_of(j), vertex_of(k)) == CGAL::COLLINEAR;
     };
     // to_double(point j - point i) of two region points, i != j. The frames tried share
     // their sides: each pair's difference is computed once (an exact subtraction reduces
-    // by gcds), the reverse pair's negated, which is its very bits: truncation and
-    // rounding to nearest are odd. (A double subtraction is cheaper than the cache.)
+    // by gcds; internal::to_double_of_difference() skips them), the reverse pair's negated,
+    // which is its very bits: truncation and rounding to nearest are odd. (A double
+    // subtraction is cheaper than the cache.)
     const std::size_t cached =
         CGAL::Algebraic_structure_traits<FT>::Is_exact::value && d + 1 <= 24 ? d + 1 : 0;
     boost::container::small_vector<std::array<double, 2>, 66> differences(
@@ -1150,8 +1150,8 @@ private:
       const std::size_t lo = (std::min)(i, j), hi = (std::max)(i, j);
       auto compute = [&] {
         const Point_2 &a = point_of(lo), &b = point_of(hi);
-        return std::array<double, 2>{
-            {CGAL::to_double(b.x() - a.x()), CGAL::to_double(b.y() - a.y())}};
+        return std::array<double, 2>{{internal::to_double_of_difference(b.x(), a.x()),
+                                      internal::to_double_of_difference(b.y(), a.y())}};
       };
       std::array<double, 2> u;
       if (hi < cached) {
@@ -1166,8 +1166,7 @@ private:
     };
     // Smallest |sine| of the three angles of the frame triangle (0 if exactly collinear).
     auto quality = [&](const std::array<std::size_t, 3>& f) {
-      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] ||
-          collinear(point_of(f[0]), point_of(f[1]), point_of(f[2])))
+      if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] || collinear(f[0], f[1], f[2]))
         return 0.0;
       double worst = 1;
       for (int i = 0; i < 3; ++i) {
@@ -1241,7 +1240,7 @@ private:
       offsets[k] = {{CGAL::to_double(point_of(k).x()) - vx, CGAL::to_double(point_of(k).y()) - vy}};
     double best_cost = std::numeric_limits<double>::infinity();
     auto consider_pair = [&](std::size_t i, std::size_t j) {
-      if (collinear(point_of(0), point_of(i), point_of(j)))
+      if (collinear(0, i, j))
         return;
       // Weights of w in (v, w_i, w_j): solve [a b] (mu, nu) = w - v.
       const auto &a = offsets[i], &b = offsets[j];

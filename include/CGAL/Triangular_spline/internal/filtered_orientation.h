@@ -42,32 +42,71 @@ inline bool enclose_rational(const mpq_class& x, double& low, double& high) {
 }
 #endif
 
+// Enclosures of a point's two coordinates, for the interval filter below. `enclosed` false:
+// no enclosure (a number type without the filter, or a coordinate outside double's safe
+// range), the exact test decides.
+struct Point_enclosure {
+  double x_low = 0, x_high = 0, y_low = 0, y_high = 0;
+  bool enclosed = false;
+};
+
+// Whether filtered_orientation() converts the coordinates of FT (GMP's rationals) at all:
+// only then are enclosures worth computing and storing.
+template <class FT>
+constexpr bool has_orientation_filter() {
+#ifdef __GMP_PLUSPLUS__
+  return std::is_same_v<std::decay_t<FT>, mpq_class>;
+#else
+  return false;
+#endif
+}
+
+// The enclosures of p's coordinates (each costs a division: a domain converts its points
+// once and passes the enclosures in).
+template <class Point_2>
+Point_enclosure enclose_point(const Point_2& p) {
+  Point_enclosure e;
+#ifdef __GMP_PLUSPLUS__
+  if constexpr (has_orientation_filter<decltype(p.x())>())
+    e.enclosed =
+        enclose_rational(p.x(), e.x_low, e.x_high) && enclose_rational(p.y(), e.y_low, e.y_high);
+#else
+  (void)p;
+#endif
+  return e;
+}
+
+// traits.orientation_2_object()(p, q, r), decided first by intervals from the enclosures of
+// the three points where they have them.
+template <class Traits>
+CGAL::Orientation filtered_orientation(const Traits& traits, const typename Traits::Point_2& p,
+                                       const typename Traits::Point_2& q,
+                                       const typename Traits::Point_2& r, const Point_enclosure& ep,
+                                       const Point_enclosure& eq, const Point_enclosure& er) {
+  if (ep.enclosed && eq.enclosed && er.enclosed) {
+    using I = CGAL::Interval_nt<false>;
+    CGAL::Protect_FPU_rounding<true> upwards;
+    const I px(ep.x_low, ep.x_high), py(ep.y_low, ep.y_high), qx(eq.x_low, eq.x_high),
+        qy(eq.y_low, eq.y_high), rx(er.x_low, er.x_high), ry(er.y_low, er.y_high);
+    const I det = (qx - px) * (ry - py) - (qy - py) * (rx - px);
+    if (det.inf() > 0)
+      return CGAL::LEFT_TURN;
+    if (det.sup() < 0)
+      return CGAL::RIGHT_TURN;
+  }
+  return traits.orientation_2_object()(p, q, r);
+}
+
 // traits.orientation_2_object()(p, q, r), decided by intervals first for mpq_class.
 template <class Traits>
 CGAL::Orientation filtered_orientation(const Traits& traits, const typename Traits::Point_2& p,
                                        const typename Traits::Point_2& q,
                                        const typename Traits::Point_2& r) {
-#ifdef __GMP_PLUSPLUS__
-  if constexpr (std::is_same_v<std::decay_t<decltype(p.x())>, mpq_class>) {
-    double c[6][2];
-    const mpq_class* x[6] = {&p.x(), &p.y(), &q.x(), &q.y(), &r.x(), &r.y()};
-    bool enclosed = true;
-    for (int i = 0; i < 6 && enclosed; ++i)
-      enclosed = enclose_rational(*x[i], c[i][0], c[i][1]);
-    if (enclosed) {
-      using I = CGAL::Interval_nt<false>;
-      CGAL::Protect_FPU_rounding<true> upwards;
-      const I px(c[0][0], c[0][1]), py(c[1][0], c[1][1]), qx(c[2][0], c[2][1]),
-          qy(c[3][0], c[3][1]), rx(c[4][0], c[4][1]), ry(c[5][0], c[5][1]);
-      const I det = (qx - px) * (ry - py) - (qy - py) * (rx - px);
-      if (det.inf() > 0)
-        return CGAL::LEFT_TURN;
-      if (det.sup() < 0)
-        return CGAL::RIGHT_TURN;
-    }
-  }
-#endif
-  return traits.orientation_2_object()(p, q, r);
+  if constexpr (has_orientation_filter<decltype(p.x())>())
+    return filtered_orientation(traits, p, q, r, enclose_point(p), enclose_point(q),
+                                enclose_point(r));
+  else
+    return traits.orientation_2_object()(p, q, r);
 }
 
 } // namespace internal
