@@ -399,6 +399,38 @@ TEST(Spline, ExactPropagationByDepthGivesThePlanOrdersValues) {
   const auto domain = random_delaunay<Exact_kernel>(300, 41);
   check(C1_quintic_spline<Exact_kernel>(domain));
   check(C1_quintic_spline<Exact_kernel, Exact_kernel::Vector_3>(domain));
+  // Free values of one decimal scale, zeros and integers among them (the sums share the
+  // values' denominators; some vanish): reduced over the least common multiples of the
+  // weights' and the values' denominators, each value must still be the canonical sum.
+  using FT = Exact_kernel::FT;
+  C1_quintic_spline<Exact_kernel> spline(domain);
+  std::mt19937 engine(3);
+  std::uniform_int_distribution<long> digits(-999999, 999999);
+  std::size_t k = 0;
+  for (auto s : spline.free_slots()) {
+    const long d = digits(engine);
+    spline.set_free_value(s, k % 7 == 0 ? FT(0) : k % 5 == 0 ? FT(d) : FT(d) / FT(1000000));
+    ++k;
+  }
+  spline.propagate();
+  auto expected = spline.values();
+  std::size_t zeros = 0;
+  for (const auto& r : spline.rules()) {
+    FT v = r.weights[0] * expected[r.sources[0]] + r.weights[1] * expected[r.sources[1]];
+    if (r.size() == 3)
+      v = v + r.weights[2] * expected[r.sources[2]];
+    expected[r.target] = v;
+    zeros += v == 0 ? 1 : 0;
+  }
+  for (std::size_t s = 0; s < expected.size(); ++s) {
+    ASSERT_EQ(spline.values()[s], expected[s]) << s;
+    // canonical (mpq_equal above compares numerators and denominators as they are)
+    ASSERT_GT(mpz_sgn(spline.values()[s].get_den_mpz_t()), 0) << s;
+    mpz_class g;
+    mpz_gcd(g.get_mpz_t(), spline.values()[s].get_num_mpz_t(), spline.values()[s].get_den_mpz_t());
+    ASSERT_EQ(g, 1) << s;
+  }
+  EXPECT_GT(zeros, 0u);
 }
 
 TEST(Spline, ExactBarycentricWeightsInIntegersEqualTheRationalFormula) {

@@ -758,29 +758,61 @@ private:
       m_values[r.target] = VT::from_coordinates(sum);
 #ifdef __GMP_PLUSPLUS__
     } else if constexpr (std::is_same_v<Value, mpq_class>) {
-      // Summed over unreduced denominators in per-thread scratch integers and reduced once
-      // (mpq_mul and mpq_add reduce by gcds at each of their five steps), then copied into
-      // the target, whose limbs stay the reduced value's size.
-      static thread_local mpq_class sum;
-      static thread_local mpz_class tn, td;
-      mpz_ptr N = mpq_numref(sum.get_mpq_t()), D = mpq_denref(sum.get_mpq_t());
+      // Summed in per-thread scratch integers over the common denominator Lw Lv, Lw the
+      // least common multiple of the weights' denominators (a rule's weights share their
+      // frame's determinant) and Lv of the values' (data of one decimal scale share theirs),
+      // then reduced once, by gcd(N, Lw) and gcd(N / that, Lv): together they are
+      // gcd(N, Lw Lv), prime by prime, so the result is canonical, from gcds of operands
+      // half the size. (mpq_mul and mpq_add reduce by gcds at each of their five steps;
+      // one reduction of the sum over the product of the terms' denominators took 1.26 times
+      // as long, on the rules of 10^5 17-digit points.)
+      static thread_local mpz_class N, Lw, Lv, g, t;
       auto w = [&](int i) { return r.weights[std::size_t(i)].get_mpq_t(); };
       auto v = [&](int i) { return m_values[r.sources[std::size_t(i)]].get_mpq_t(); };
-      mpz_mul(N, mpq_numref(w(0)), mpq_numref(v(0)));
-      mpz_mul(D, mpq_denref(w(0)), mpq_denref(v(0)));
-      for (int i = 1; i < r.size(); ++i) {
-        mpz_mul(tn.get_mpz_t(), mpq_numref(w(i)), mpq_numref(v(i)));
-        mpz_mul(td.get_mpz_t(), mpq_denref(w(i)), mpq_denref(v(i)));
-        if (mpz_cmp(D, td.get_mpz_t()) == 0) {
-          mpz_add(N, N, tn.get_mpz_t());
-        } else {
-          mpz_mul(N, N, td.get_mpz_t());
-          mpz_addmul(N, tn.get_mpz_t(), D);
-          mpz_mul(D, D, td.get_mpz_t());
+      const int n = r.size();
+      // the largest denominator if it is a multiple of the others, else their lcm
+      auto lcm_into = [&](mpz_class& L, auto denominator) {
+        int big = 0;
+        for (int i = 1; i < n; ++i)
+          if (mpz_cmp(denominator(i), denominator(big)) > 0)
+            big = i;
+        mpz_set(L.get_mpz_t(), denominator(big));
+        for (int i = 0; i < n; ++i)
+          if (i != big && !mpz_divisible_p(L.get_mpz_t(), denominator(i))) {
+            mpz_gcd(g.get_mpz_t(), L.get_mpz_t(), denominator(i));
+            mpz_divexact(t.get_mpz_t(), denominator(i), g.get_mpz_t());
+            mpz_mul(L.get_mpz_t(), L.get_mpz_t(), t.get_mpz_t());
+          }
+      };
+      lcm_into(Lw, [&](int i) { return mpq_denref(w(i)); });
+      lcm_into(Lv, [&](int i) { return mpq_denref(v(i)); });
+      mpz_set_ui(N.get_mpz_t(), 0);
+      for (int i = 0; i < n; ++i) {
+        mpz_mul(t.get_mpz_t(), mpq_numref(w(i)), mpq_numref(v(i)));
+        if (mpz_cmp(Lw.get_mpz_t(), mpq_denref(w(i))) != 0) {
+          mpz_divexact(g.get_mpz_t(), Lw.get_mpz_t(), mpq_denref(w(i)));
+          mpz_mul(t.get_mpz_t(), t.get_mpz_t(), g.get_mpz_t());
+        }
+        if (mpz_cmp(Lv.get_mpz_t(), mpq_denref(v(i))) != 0) {
+          mpz_divexact(g.get_mpz_t(), Lv.get_mpz_t(), mpq_denref(v(i)));
+          mpz_mul(t.get_mpz_t(), t.get_mpz_t(), g.get_mpz_t());
+        }
+        mpz_add(N.get_mpz_t(), N.get_mpz_t(), t.get_mpz_t());
+      }
+      const mpq_ptr target = m_values[r.target].get_mpq_t();
+      if (mpz_sgn(N.get_mpz_t()) == 0) {
+        mpq_set_ui(target, 0, 1);
+        return;
+      }
+      for (mpz_class* L : {&Lw, &Lv}) {
+        mpz_gcd(g.get_mpz_t(), N.get_mpz_t(), L->get_mpz_t());
+        if (mpz_cmp_ui(g.get_mpz_t(), 1) != 0) {
+          mpz_divexact(N.get_mpz_t(), N.get_mpz_t(), g.get_mpz_t());
+          mpz_divexact(L->get_mpz_t(), L->get_mpz_t(), g.get_mpz_t());
         }
       }
-      mpq_canonicalize(sum.get_mpq_t());
-      mpq_set(m_values[r.target].get_mpq_t(), sum.get_mpq_t());
+      mpz_set(mpq_numref(target), N.get_mpz_t());
+      mpz_mul(mpq_denref(target), Lw.get_mpz_t(), Lv.get_mpz_t());
 #endif
     } else {
       Value v = r.weights[0] * m_values[r.sources[0]] + r.weights[1] * m_values[r.sources[1]];
