@@ -277,9 +277,11 @@ Json run(const C1_job& job, std::ostream& out) {
   const auto& d = spline.domain();
   // Double builds: residuals are round-off, accepted up to 1e-10 of the largest control
   // value; exact builds: the verdict is a proof.
+  // (Not converted in exact builds: 2.5 million fractions at 10^5 points, 0.2 s on one core.)
   double scale = 1;
-  for (const auto& v : spline.values())
-    scale = (std::max)(scale, TS::max_abs_coordinate(v));
+  if (!job.exact)
+    for (const auto& v : spline.values())
+      scale = (std::max)(scale, TS::max_abs_coordinate(v));
   progress("c1",
            std::string(job.exact ? "certifying exactly " : "checking ") +
                std::to_string(d.number_of_interior_edges()) + " interior edges",

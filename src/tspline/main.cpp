@@ -84,8 +84,12 @@ std::string one_line(std::string text) {
 
 // Restarts the tool once with malloc tuned for its large arrays (glibc >= 2.35 reads
 // GLIBC_TUNABLES at start-up only, hence the exec). A c1 run at 10^6 points touches 1.4 GB:
-// - hugetlb=1: large blocks on transparent huge pages; on 4 KB pages the faults and TLB
-//   misses cost 8% of the CPU (paired runs: 34.0 s against 36.9 s);
+// - hugetlb=1 (not with --exact): large blocks on transparent huge pages; on 4 KB pages the
+//   faults and TLB misses cost 8% of the CPU (paired runs: 34.0 s against 36.9 s), and at
+//   10^7 points 175.7 s against 189.5 s of wall time (system 32 s against 46 s). Exact runs
+//   fault their heap in phase after phase, on one core between parallel phases, and there
+//   huge pages cost more than they save (10^5 17-digit points, --exact: 0.70 s of system
+//   time against 1.28 s, build + certificate 0.85x the wall time);
 // - a fixed mmap threshold of 4 MB: freed large blocks go back to the system instead of
 //   being kept by glibc's dynamic threshold (about 100 MB of the peak at 10^6 points: 1318
 //   against 1394 MB), while the global fits' windows, which allocate and free blocks of a
@@ -106,9 +110,11 @@ void tune_malloc(char* argv[]) {
   std::string value = tunables == nullptr ? "" : tunables;
   if (value.find("glibc.malloc.") != std::string::npos)
     return;
-  value += std::string(value.empty() ? "" : ":") +
-           "glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=4194304:"
-           "glibc.malloc.trim_threshold=1073741824";
+  bool exact = false;
+  for (char** a = argv + 1; *a != nullptr; ++a)
+    exact = exact || std::string_view(*a) == "--exact";
+  value += std::string(value.empty() ? "" : ":") + "glibc.malloc.hugetlb=" + (exact ? "0" : "1") +
+           ":glibc.malloc.mmap_threshold=4194304:glibc.malloc.trim_threshold=1073741824";
   if (setenv("GLIBC_TUNABLES", value.c_str(), 1) == 0)
     execv("/proc/self/exe", argv);
 #else

@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -42,6 +43,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <thread>
 
 using namespace ts_test;
 using TS::C1_quintic_spline;
@@ -496,6 +498,68 @@ TEST(Spline, ExactBarycentricWeightsInIntegersEqualTheRationalFormula) {
 }
 
 #if defined(__SIZEOF_INT128__)
+TEST(Spline, BarycentricQuadGivesTheRationalFormulasWeightsForEveryOrder) {
+  // An exact plan takes an interior edge's four rules from one Barycentric_quad of its ends
+  // and apexes (shared determinants, gcds memoized by pair): for every order of the four
+  // points the weights must be the formula's rationals, canonical, std::nullopt exactly for
+  // collinear corners, and approximate_largest() within 1e-15 of the largest weight.
+  using FT = Exact_kernel::FT;
+  using P = Exact_kernel::Point_2;
+  Random_rationals random(29);
+  std::mt19937 engine(7);
+  std::uniform_int_distribution<long> digits(-999999, 999999);
+  std::uniform_int_distribution<long long> long_digits(-999999999999999LL, 999999999999999LL);
+  auto decimal = [&]() -> FT { return FT(digits(engine)) / FT(1000000); };
+  auto seventeen = [&]() -> FT { // 17 significant digits, as the benchmarks' data
+    return FT(mpz_class(std::to_string(long_digits(engine)) + "37", 10)) /
+           FT(mpz_class("10000000000000000", 10));
+  };
+  auto coords = [](const P& p) { return std::array<FT, 2>{{p.x(), p.y()}}; };
+  int made = 0, collinear_orders = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int kind = trial % 4;
+    std::array<P, 4> p;
+    for (P& q : p)
+      q = kind == 0   ? P(decimal(), decimal())
+          : kind == 1 ? P(seventeen(), seventeen())
+          : kind == 2 ? P(random.rational<FT>(1000000, 999983), random.rational<FT>(7, 3))
+                      : P(FT(digits(engine) % 4), FT(digits(engine) % 4)); // many collinear
+    auto quad = TS::internal::Barycentric_quad::make(
+        {{&p[0].x(), &p[0].y(), &p[1].x(), &p[1].y(), &p[2].x(), &p[2].y(), &p[3].x(), &p[3].y()}});
+    if (!quad)
+      continue;
+    ++made;
+    std::array<int, 4> order{{0, 1, 2, 3}};
+    do {
+      const int x = order[0], a = order[1], b = order[2], c = order[3];
+      const auto w = quad->weights(x, a, b, c);
+      if (CGAL::collinear(p[std::size_t(a)], p[std::size_t(b)], p[std::size_t(c)])) {
+        EXPECT_FALSE(w) << trial;
+        ++collinear_orders;
+        continue;
+      }
+      ASSERT_TRUE(w) << trial;
+      const auto expected = TS::internal::barycentric_of_coordinates(
+          coords(p[std::size_t(x)]), coords(p[std::size_t(a)]), coords(p[std::size_t(b)]),
+          coords(p[std::size_t(c)]));
+      double largest = 0;
+      for (std::size_t i = 0; i < 3; ++i) {
+        ASSERT_EQ((*w)[i], expected[i]) << trial << " " << x << a << b << c;
+        FT copy = (*w)[i];
+        copy.canonicalize();
+        ASSERT_TRUE(mpz_cmp(copy.get_den_mpz_t(), (*w)[i].get_den_mpz_t()) == 0 &&
+                    mpz_cmp(copy.get_num_mpz_t(), (*w)[i].get_num_mpz_t()) == 0)
+            << trial;
+        largest = (std::max)(largest, std::abs(CGAL::to_double(expected[i])));
+      }
+      EXPECT_LE(std::abs(quad->approximate_largest(x, a, b, c) - largest), 1e-15 * largest)
+          << trial;
+    } while (std::next_permutation(order.begin(), order.end()));
+  }
+  EXPECT_GE(made, 300); // all decimal and integer sets (random rationals may decline)
+  EXPECT_GT(collinear_orders, 100);
+}
+
 TEST(Spline, BinaryGcdOf128BitIntegersIsGmpsGcd) {
   // gcd_128() reduces the exact plan's weights: it must be GMP's gcd on values across the
   // 64-bit boundary (the loop changes word size there), with zeros, equal values, powers of
@@ -862,6 +926,30 @@ TEST(Parallel, EveryIndexOnceAndTheSmallestIndexThrows) {
   std::vector<int> visits(100000, 0);
   TS::internal::parallel_for_index(visits.size(), 4, [&](std::size_t i) { ++visits[i]; });
   EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), 100000);
+  // A block runs on one thread in increasing order (callers rely on it: evaluation hints,
+  // per-block buffers), and a thread held up does not keep its share of the blocks: the
+  // others take them (a fixed share per thread would leave it exactly half of them).
+  std::vector<std::thread::id> thread_of(64 * 16);
+  std::vector<std::size_t> visit_order(thread_of.size());
+  std::atomic<std::size_t> clock{0};
+  TS::internal::parallel_for_index(
+      thread_of.size(), 2,
+      [&](std::size_t i) {
+        if (i == 0)
+          std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        thread_of[i] = std::this_thread::get_id();
+        visit_order[i] = clock++;
+      },
+      16);
+  std::size_t held_up_blocks = 0;
+  for (std::size_t b = 0; b < 64; ++b) {
+    for (std::size_t i = 16 * b + 1; i < 16 * b + 16; ++i) {
+      EXPECT_EQ(thread_of[i], thread_of[16 * b]) << i;
+      EXPECT_GT(visit_order[i], visit_order[i - 1]) << i;
+    }
+    held_up_blocks += thread_of[16 * b] == thread_of[0] ? 1 : 0;
+  }
+  EXPECT_LT(held_up_blocks, 32u);
   for (std::size_t threads : {1u, 2u, 3u, 8u}) {
     try {
       TS::internal::parallel_for_index(100000, threads, [](std::size_t i) {

@@ -1328,6 +1328,46 @@ private:
     return m;
   }
 
+  // Step 5 of build_plan_once() by edge: which flip point is free (1 the left one, 2 the
+  // right one, 0 not chosen here), the other's rule weights and their largest_abs().
+  struct Flip_choices {
+    std::vector<unsigned char> free_flip;
+    std::vector<std::array<FT, 3>> weights;
+    std::vector<double> largest;
+  };
+
+#if defined(__GMP_PLUSPLUS__) && defined(__SIZEOF_INT128__)
+  // Step 5's choice for edge e from the quad of its apexes and ends (0 = left apex, 1 =
+  // right apex, 2 and 3 the ends): the rule with the smaller largest weight, as
+  // build_plan_once() chooses it from both rules' exact weights. Only the chosen rule's
+  // weights are made: the double quotients of the determinants decide unless the two
+  // largest weights are within 1e-12 of each other (their error is below 1e-15), and then
+  // both rules' exact weights do.
+  static void choose_flip(internal::Barycentric_quad& quad, std::size_t e, Flip_choices& flips) {
+    const double right_approximate = quad.approximate_largest(1, 0, 2, 3),
+                 left_approximate = quad.approximate_largest(0, 1, 2, 3);
+    bool left_free;
+    std::optional<std::array<FT, 3>> chosen;
+    if (std::abs(right_approximate - left_approximate) >
+        1e-12 * (std::max)(right_approximate, left_approximate)) {
+      left_free = !(left_approximate < right_approximate);
+      chosen = left_free ? quad.weights(1, 0, 2, 3) : quad.weights(0, 1, 2, 3);
+    } else {
+      std::optional<std::array<FT, 3>> right_from_left = quad.weights(1, 0, 2, 3),
+                                       left_from_right = quad.weights(0, 1, 2, 3);
+      if (!right_from_left || !left_from_right)
+        return;
+      left_free = !(largest_abs(*left_from_right) < largest_abs(*right_from_left));
+      chosen = std::move(left_free ? right_from_left : left_from_right);
+    }
+    if (!chosen)
+      return;
+    flips.largest[e] = largest_abs(*chosen);
+    flips.weights[e] = std::move(*chosen);
+    flips.free_flip[e] = left_free ? 1 : 2;
+  }
+#endif
+
   // Chooses, per interior edge, the end (if any) whose edge-middle point is re-routed
   // through the middle diamond: exactly degenerate ends (and, in double, ends collinear up
   // to rounding) always; otherwise the end whose regular weights exceed
@@ -1336,15 +1376,23 @@ private:
   // `middle` (plans that store their rules): the regular rule's weights of both ends of
   // every interior edge, index 2e + side, where computed (not at exactly degenerate ends);
   // step 3 of build_plan_once() takes them instead of computing them again.
+  // `flips` (with `middle`): step 5's choice of flip rule and its weights, by edge, where
+  // computed with the edge-middle weights (internal::Barycentric_quad: GMP rationals that
+  // fit in 128-bit determinants).
   std::vector<Edge_route>
   route_edges(const std::vector<char>& allow_thin,
               std::vector<std::optional<std::array<FT, 3>>>* middle = nullptr,
-              std::vector<double>* middle_largest = nullptr) const {
+              std::vector<double>* middle_largest = nullptr, Flip_choices* flips = nullptr) const {
     const Index E = static_cast<Index>(m_domain.number_of_edges());
     std::vector<Edge_route> routes(E);
     if (middle) {
       middle->assign(2 * std::size_t(E), std::nullopt);
       middle_largest->assign(2 * std::size_t(E), -1.0);
+    }
+    if (flips) {
+      flips->free_flip.assign(E, 0);
+      flips->weights.resize(E);
+      flips->largest.assign(E, -1.0);
     }
     std::vector<char> exact_end(2 * std::size_t(E), 0), numerical_end(2 * std::size_t(E), 0);
     for (const auto& d : m_degenerate.frames) {
@@ -1361,6 +1409,18 @@ private:
           const auto& ef = m_domain.edge_faces(e);
           const Point_2& pl = m_domain.point(m_domain.opposite_vertex(ef[0], e));
           const Point_2& pr = m_domain.point(m_domain.opposite_vertex(ef[1], e));
+#if defined(__GMP_PLUSPLUS__) && defined(__SIZEOF_INT128__)
+          // the four points 0 = pl, 1 = pr, 2 = ends[0], 3 = ends[1] (Barycentric_quad)
+          [[maybe_unused]] std::optional<internal::Barycentric_quad> quad;
+          if constexpr (std::is_same_v<FT, mpq_class>)
+            if (flips) {
+              const Point_2 &lo = m_domain.point(ends[0]), &hi = m_domain.point(ends[1]);
+              quad = internal::Barycentric_quad::make(
+                  {{&pl.x(), &pl.y(), &pr.x(), &pr.y(), &lo.x(), &lo.y(), &hi.x(), &hi.y()}});
+              if (quad)
+                choose_flip(*quad, i, *flips);
+            }
+#endif
           std::array<double, 2> weight{{0, 0}};
           for (int side = 0; side < 2; ++side) {
             const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
@@ -1369,7 +1429,18 @@ private:
             if (exact_end[k]) {
               weight[std::size_t(side)] = std::numeric_limits<double>::infinity();
             } else {
-              std::array<FT, 3> w = barycentric(other, pl, r, pr);
+              std::array<FT, 3> w;
+              bool computed = false;
+#if defined(__GMP_PLUSPLUS__) && defined(__SIZEOF_INT128__)
+              if constexpr (std::is_same_v<FT, mpq_class>)
+                if (quad)
+                  if (auto q = side == 0 ? quad->weights(3, 0, 2, 1) : quad->weights(2, 0, 3, 1)) {
+                    w = std::move(*q);
+                    computed = true;
+                  }
+#endif
+              if (!computed)
+                w = barycentric(other, pl, r, pr);
               weight[std::size_t(side)] = largest_abs(w);
               if (middle) {
                 (*middle)[k] = std::move(w);
@@ -1574,8 +1645,9 @@ private:
     internal::release(corner_largest);
     std::vector<std::optional<std::array<FT, 3>>> middle; // stored plans (route_edges())
     std::vector<double> middle_largest;
-    std::vector<Edge_route> routes =
-        route_edges(allow_thin, parallel_plan ? nullptr : &middle, &middle_largest);
+    Flip_choices flips;
+    std::vector<Edge_route> routes = route_edges(allow_thin, parallel_plan ? nullptr : &middle,
+                                                 &middle_largest, parallel_plan ? nullptr : &flips);
     m_frames.clear();
     m_near_singular.clear();
 
@@ -1852,18 +1924,17 @@ private:
       return !m_domain.is_boundary_edge(e) && routes[e].end == Domain::null_index;
     };
     internal::release(middle);
-    std::vector<unsigned char> free_flip;
-    std::vector<std::array<FT, 3>> flip_weights_of; // stored plans: the chosen rule's, by edge
-    std::vector<double> flip_largest;               // and its largest_abs()
+    // stored plans: the chosen rule's weights by edge, and their largest_abs(), where
+    // route_edges() did not choose
+    std::vector<unsigned char>& free_flip = flips.free_flip;
+    std::vector<std::array<FT, 3>>& flip_weights_of = flips.weights;
+    std::vector<double>& flip_largest = flips.largest;
     if constexpr (!parallel_plan) {
-      free_flip.assign(E, 0);
-      flip_weights_of.resize(E);
-      flip_largest.resize(E);
       internal::parallel_for_index(
           E, internal::thread_count(E, 1000),
           [&](std::size_t i) {
             const Index e = static_cast<Index>(i);
-            if (!regular_edge(e))
+            if (!regular_edge(e) || free_flip[i] != 0)
               return;
             std::array<FT, 3> right_from_left = flip_weights(e, true);
             std::array<FT, 3> left_from_right = flip_weights(e, false);

@@ -8,6 +8,7 @@
 // writes only its own results, so the output does not depend on the number of threads.
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <exception>
 #include <thread>
@@ -37,9 +38,12 @@ inline std::size_t thread_count(std::size_t n, std::size_t grain) {
 // a caller may append the results of a block's indices to that block's own buffer.
 constexpr std::size_t parallel_block = 1024;
 
-// Calls f(i) for every i in [0, n), in interleaved blocks of `block` (default
-// `parallel_block`; smaller for items of exact arithmetic, which cost a thousand times more)
-// over `threads` threads (1: the calling thread only). An exception thrown by f is rethrown
+// Calls f(i) for every i in [0, n), in blocks of `block` (default `parallel_block`; smaller
+// for items of exact arithmetic, which cost a thousand times more) over `threads` threads
+// (1: the calling thread only). Each thread takes the next block not yet taken: on a
+// machine whose cores are shared (a virtual machine's, half their time stolen), a fixed
+// share of the blocks per thread left one core working alone at the end of each loop (0.15
+// s of an exact plan's 3.7 s at 10^5 points). An exception thrown by f is rethrown
 // after every thread has stopped: the one of the smallest index, as a serial loop would have
 // thrown it.
 template <class F>
@@ -54,9 +58,11 @@ void parallel_for_index(std::size_t n, std::size_t threads, const F& f,
   }
   std::vector<std::exception_ptr> error(threads);
   std::vector<std::size_t> error_at(threads, n);
+  std::atomic<std::size_t> next{0}; // the next block to take
+  const std::size_t blocks = n / block + (n % block != 0 ? 1 : 0);
   auto run = [&](std::size_t t) {
-    for (std::size_t first = t * block; first < n; first += threads * block) {
-      const std::size_t last = (std::min)(n, first + block);
+    for (std::size_t b; (b = next.fetch_add(1, std::memory_order_relaxed)) < blocks;) {
+      const std::size_t first = b * block, last = (std::min)(n, first + block);
       for (std::size_t i = first; i < last; ++i) {
         try {
           f(i);

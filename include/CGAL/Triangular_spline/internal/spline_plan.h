@@ -164,16 +164,14 @@ inline unsigned __int128 gcd_128(unsigned __int128 a, unsigned __int128 b) {
   return U(x) << shift;
 }
 
-// barycentric_of_fractions() for GMP's rationals whose eight coordinates, brought to their
-// least common denominator L, are integers of magnitude below 2^61 (decimal data of up to
-// about 18 digits; doubles that share a binade): L cancels, the weights are ratios of
-// determinants of those integers, computed in 128 bits (below 2^125, so d - A - B cannot
-// overflow) and reduced by one binary gcd each: no GMP arithmetic and no allocation but the
-// results'. std::nullopt beyond, for barycentric_of_fractions(). (The same rationals, tested.)
-// `q`: the coordinates of x, a, b and c, in that order, read in place (copies of the eight
-// rationals took three quarters of this function's time).
-inline std::optional<std::array<mpq_class, 3>>
-barycentric_of_small_fractions(const std::array<const mpq_class*, 8>& q) {
+// The coordinates of points given as GMP rationals, brought to their least common
+// denominator L, as integers: std::nullopt unless L and every such integer are below 2^61
+// (decimal data of up to about 18 digits; doubles that share a binade). Differences of
+// them are below 2^62 and determinants of the differences below 2^125: 128 bits hold them.
+// `q`: the rationals, read in place (copies of them took three quarters of the time).
+template <std::size_t n>
+std::optional<std::array<__int128, n>>
+small_integer_coordinates(const std::array<const mpq_class*, n>& q) {
   using I = __int128;
   using U = unsigned __int128;
   constexpr I bound = I(1) << 61;
@@ -188,43 +186,145 @@ barycentric_of_small_fractions(const std::array<const mpq_class*, 8>& q) {
       return std::nullopt;
     common = std::uint64_t(l);
   }
-  std::array<I, 8> X;
-  for (std::size_t i = 0; i < 8; ++i) {
-    const mpz_srcptr n = mpq_numref(q[i]->get_mpq_t());
-    if (mpz_sizeinbase(n, 2) > 62)
+  std::array<I, n> X;
+  for (std::size_t i = 0; i < n; ++i) {
+    const mpz_srcptr z = mpq_numref(q[i]->get_mpq_t());
+    if (mpz_sizeinbase(z, 2) > 62)
       return std::nullopt;
     const I magnitude =
-        I(mpz_get_ui(n)) * I(common / std::uint64_t(mpz_get_ui(mpq_denref(q[i]->get_mpq_t()))));
+        I(mpz_get_ui(z)) * I(common / std::uint64_t(mpz_get_ui(mpq_denref(q[i]->get_mpq_t()))));
     if (magnitude >= bound)
       return std::nullopt;
-    X[i] = mpz_sgn(n) < 0 ? -magnitude : magnitude;
+    X[i] = mpz_sgn(z) < 0 ? -magnitude : magnitude;
   }
-  const I ux = X[4] - X[2], uy = X[5] - X[3]; // b - a
-  const I vx = X[6] - X[2], vy = X[7] - X[3]; // c - a
-  const I wx = X[0] - X[2], wy = X[1] - X[3]; // x - a
+  return X;
+}
+
+// The canonical rational n / d of 128-bit integers, d != 0, `g` = gcd(|n|, |d|).
+inline mpq_class fraction_of_128(__int128 n, __int128 d, unsigned __int128 g) {
+  using U = unsigned __int128;
+  // (limbs written in place: a shift and an add grew the integer twice, each a new block)
+  auto set = [](mpz_ptr z, U v) {
+    const std::uint64_t high = std::uint64_t(v >> 64), low = std::uint64_t(v);
+    if constexpr (sizeof(unsigned long) != 8 || GMP_NUMB_BITS != 64) {
+      mpz_set_ui(z, (unsigned long)(high));
+      mpz_mul_2exp(z, z, 64);
+      mpz_add_ui(z, z, (unsigned long)(low));
+      return;
+    }
+    if (high == 0) {
+      mpz_set_ui(z, (unsigned long)(low));
+      return;
+    }
+    mp_limb_t* limbs = mpz_limbs_write(z, 2);
+    limbs[0] = mp_limb_t(low);
+    limbs[1] = mp_limb_t(high);
+    mpz_limbs_finish(z, 2);
+  };
+  const bool negative = (n < 0) != (d < 0);
+  const U un = n < 0 ? U(-n) : U(n), ud = d < 0 ? U(-d) : U(d);
+  mpq_class r;
+  set(r.get_num_mpz_t(), un / g);
+  set(r.get_den_mpz_t(), ud / g);
+  if (negative)
+    mpz_neg(r.get_num_mpz_t(), r.get_num_mpz_t());
+  return r; // canonical: coprime, positive denominator (1 for zero)
+}
+
+inline unsigned __int128 abs_128(__int128 v) {
+  return v < 0 ? (unsigned __int128)(-v) : (unsigned __int128)(v);
+}
+
+// barycentric_of_fractions() for GMP's rationals whose coordinates small_integer_coordinates()
+// takes: L cancels, the weights are ratios of determinants of those integers, computed in 128
+// bits and reduced by one binary gcd each: no GMP arithmetic and no allocation but the
+// results'. std::nullopt beyond, for barycentric_of_fractions(). (The same rationals, tested.)
+// `q`: the coordinates of x, a, b and c, in that order.
+inline std::optional<std::array<mpq_class, 3>>
+barycentric_of_small_fractions(const std::array<const mpq_class*, 8>& q) {
+  using I = __int128;
+  const auto X = small_integer_coordinates(q);
+  if (!X)
+    return std::nullopt;
+  const I ux = (*X)[4] - (*X)[2], uy = (*X)[5] - (*X)[3]; // b - a
+  const I vx = (*X)[6] - (*X)[2], vy = (*X)[7] - (*X)[3]; // c - a
+  const I wx = (*X)[0] - (*X)[2], wy = (*X)[1] - (*X)[3]; // x - a
   const I d = ux * vy - uy * vx;
   if (d == 0)
     return std::nullopt;
   const I A = wx * vy - wy * vx; // mu = A / d
   const I B = ux * wy - uy * wx; // nu = B / d
-  auto set = [](mpz_ptr z, U v) {
-    mpz_set_ui(z, (unsigned long)(std::uint64_t(v >> 64)));
-    mpz_mul_2exp(z, z, 64);
-    mpz_add_ui(z, z, (unsigned long)(std::uint64_t(v)));
-  };
-  auto fraction = [&](I n) {
-    const bool negative = (n < 0) != (d < 0);
-    U un = n < 0 ? U(-n) : U(n), ud = d < 0 ? U(-d) : U(d);
-    const U g = gcd_128(un, ud);
-    mpq_class r;
-    set(r.get_num_mpz_t(), un / g);
-    set(r.get_den_mpz_t(), ud / g);
-    if (negative)
-      mpz_neg(r.get_num_mpz_t(), r.get_num_mpz_t());
-    return r; // canonical: coprime, positive denominator (1 for zero)
-  };
+  auto fraction = [&](I n) { return fraction_of_128(n, d, gcd_128(abs_128(n), abs_128(d))); };
   return std::array<mpq_class, 3>{{fraction(d - A - B), fraction(A), fraction(B)}};
 }
+
+// The barycentric weights of each of four points with respect to the other three, for GMP
+// rationals that small_integer_coordinates() takes. An interior edge's four rules (the
+// edge-middle points from either end, the flip point from either apex) are such weights of
+// its two ends and two apexes, and every weight is a ratio of two of the four triangles'
+// determinants: six gcds serve all twelve weights, where barycentric_of_small_fractions()
+// takes one per weight. (The same rationals, tested.)
+class Barycentric_quad {
+public:
+  // `q`: the coordinates of the four points, in order.
+  static std::optional<Barycentric_quad> make(const std::array<const mpq_class*, 8>& q) {
+    const auto X = small_integer_coordinates(q);
+    if (!X)
+      return std::nullopt;
+    return Barycentric_quad(*X);
+  }
+
+  // The weights of point x with respect to (a, b, c) (distinct indices 0 to 3, in the
+  // order of barycentric_weights_in_order()); std::nullopt if a, b and c are collinear.
+  std::optional<std::array<mpq_class, 3>> weights(int x, int a, int b, int c) {
+    const __int128 d = determinant(a, b, c);
+    if (d == 0)
+      return std::nullopt;
+    // weight of a = det(x, b, c) / det(a, b, c): |det(x, b, c)| is the triangle without a
+    return std::array<mpq_class, 3>{{fraction_of_128(determinant(x, b, c), d, gcd(x, a)),
+                                     fraction_of_128(determinant(a, x, c), d, gcd(x, b)),
+                                     fraction_of_128(determinant(a, b, x), d, gcd(x, c))}};
+  }
+
+  // The largest absolute weight of x with respect to (a, b, c), in double division of the
+  // determinants rounded to double: within 4e-16 relative of the weights' exact value (two
+  // roundings and a division); infinity if a, b and c are collinear.
+  double approximate_largest(int x, int a, int b, int c) const {
+    const double d = std::abs(double(determinant(a, b, c)));
+    return (std::max)({std::abs(double(determinant(x, b, c))),
+                       std::abs(double(determinant(a, x, c))),
+                       std::abs(double(determinant(a, b, x)))}) /
+           d;
+  }
+
+private:
+  explicit Barycentric_quad(const std::array<__int128, 8>& X) : m_X(X) {}
+  __int128 determinant(int a, int b, int c) const {
+    const __int128 ux = m_X[2 * b] - m_X[2 * a], uy = m_X[2 * b + 1] - m_X[2 * a + 1];
+    const __int128 vx = m_X[2 * c] - m_X[2 * a], vy = m_X[2 * c + 1] - m_X[2 * a + 1];
+    return ux * vy - uy * vx;
+  }
+  // gcd of the determinants of the triangles without i and without j, i != j: computed once
+  unsigned __int128 gcd(int i, int j) {
+    const int lo = (std::min)(i, j), hi = (std::max)(i, j);
+    const int k =
+        lo == 0 ? hi - 1 : lo + hi; // (0,1..3) -> 0..2, (1,2) -> 3, (1,3) -> 4, (2,3) -> 5
+    if (!m_known[std::size_t(k)]) {
+      m_gcd[std::size_t(k)] = gcd_128(abs_128(without(lo)), abs_128(without(hi)));
+      m_known[std::size_t(k)] = true;
+    }
+    return m_gcd[std::size_t(k)];
+  }
+  __int128 without(int i) const {
+    return i == 0   ? determinant(1, 2, 3)
+           : i == 1 ? determinant(0, 2, 3)
+           : i == 2 ? determinant(0, 1, 3)
+                    : determinant(0, 1, 2);
+  }
+  std::array<__int128, 8> m_X;
+  std::array<unsigned __int128, 6> m_gcd{};
+  std::array<bool, 6> m_known{};
+};
 #endif
 
 // CGAL::to_double(b - a), the exact difference truncated (mpq_get_d() rounds towards zero),
