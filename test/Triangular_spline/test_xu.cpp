@@ -28,6 +28,7 @@
 #include <CGAL/Triangular_spline/internal/avx2_clones.h>
 #include <CGAL/Triangular_spline/internal/filtered_orientation.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
+#include <CGAL/Triangular_spline/internal/parallel_vector.h>
 
 #include <algorithm>
 #include <array>
@@ -961,6 +962,110 @@ TEST(Parallel, EveryIndexOnceAndTheSmallestIndexThrows) {
       EXPECT_EQ(std::string(e.what()), "at 5000") << threads;
     }
   }
+}
+
+// An element that counts the live ones, with a GMP fraction (moving it allocates).
+struct Counted_element {
+  static inline std::atomic<int> live{0};
+  std::size_t index;
+  mpq_class value;
+  Counted_element(std::size_t i, mpq_class v) : index(i), value(std::move(v)) { ++live; }
+  Counted_element(const Counted_element& o) : index(o.index), value(o.value) { ++live; }
+  Counted_element(Counted_element&& o) : index(o.index), value(std::move(o.value)) { ++live; }
+  Counted_element& operator=(const Counted_element&) = default;
+  ~Counted_element() { --live; }
+};
+
+TEST(Parallel, VectorMakesGroupsInPlaceAndUndoesAFailedAppend) {
+  using Vector = TS::internal::Parallel_vector<Counted_element>;
+  {
+    Vector v;
+    for (std::size_t i = 0; i < 40; ++i) // grows past 16 and 32: moved twice
+      v.emplace_back(i, mpq_class(int(i), 7));
+    // groups of 0 to 4 elements, on 3 threads
+    std::vector<std::size_t> first(5001, 0);
+    for (std::size_t g = 0; g < 5000; ++g)
+      first[g + 1] = first[g] + g % 5;
+    v.append_groups(first, 3, [&](std::size_t g, Counted_element* at, std::uint32_t& made) {
+      for (std::size_t j = 0; j < g % 5; ++j) {
+        ::new (static_cast<void*>(at + made)) Counted_element(g, mpq_class(int(j) + 1, int(g) + 1));
+        ++made;
+      }
+    });
+    ASSERT_EQ(v.size(), 40 + first.back());
+    EXPECT_EQ(Counted_element::live.load(), int(v.size()));
+    for (std::size_t i = 0; i < 40; ++i)
+      EXPECT_TRUE(v[i].index == i && v[i].value == mpq_class(int(i), 7)) << i;
+    for (std::size_t g = 0; g < 5000; ++g)
+      for (std::size_t j = 0; j < g % 5; ++j) {
+        const Counted_element& e = v[40 + first[g] + j];
+        EXPECT_TRUE(e.index == g && e.value == mpq_class(int(j) + 1, int(g) + 1)) << g << " " << j;
+      }
+    // A group that throws after making some, and one that makes too few: nothing of the
+    // append is left (the made elements destroyed), the smallest group's exception comes out,
+    // and the vector is as before.
+    const std::size_t before = v.size();
+    for (const bool too_few : {false, true}) {
+      try {
+        v.append_groups(first, 3, [&](std::size_t g, Counted_element* at, std::uint32_t& made) {
+          for (std::size_t j = 0; j < g % 5; ++j) {
+            if (j == 2 && (g == 3004 || g == 4004) && !too_few)
+              throw TS::Invalid_input("group " + std::to_string(g));
+            if (j == 1 && g == 1002 && too_few)
+              return;
+            ::new (static_cast<void*>(at + made)) Counted_element(g, mpq_class(1));
+            ++made;
+          }
+        });
+        ADD_FAILURE() << "no exception";
+      } catch (const TS::Invalid_input& e) {
+        EXPECT_FALSE(too_few);
+        EXPECT_EQ(std::string(e.what()), "group 3004");
+      } catch (const std::logic_error& e) {
+        EXPECT_TRUE(too_few) << e.what();
+      }
+      EXPECT_EQ(v.size(), before);
+      EXPECT_EQ(Counted_element::live.load(), int(before));
+    }
+    Vector copy = v;
+    EXPECT_EQ(Counted_element::live.load(), int(2 * before));
+    EXPECT_TRUE(copy[before - 1].index == v[before - 1].index &&
+                copy[before - 1].value == v[before - 1].value);
+    Vector moved = std::move(copy);
+    EXPECT_EQ(moved.size(), before);
+    EXPECT_EQ(copy.size(), 0u);
+    moved.clear();
+    v.shrink_to_fit();
+    EXPECT_EQ(v.capacity(), v.size());
+    EXPECT_EQ(Counted_element::live.load(), int(before));
+  }
+  EXPECT_EQ(Counted_element::live.load(), 0);
+}
+
+// Exact plans make their stored rules on all cores (Parallel_vector) and list them in plan
+// order: the same rules, in the same order, on one thread and on all.
+TEST(Parallel, ExactPlanOnAllCoresIsTheOneThreadPlan) {
+  using Spline = C1_quintic_spline<Exact_kernel>;
+  std::mt19937 random(12);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  TS::Scattered_data<Exact_kernel> data;
+  for (int i = 0; i < 4000; ++i) {
+    data.points.emplace_back(uniform(random), uniform(random));
+    data.values.emplace_back(0);
+  }
+  const Planar_domain<Exact_kernel> domain = TS::delaunay_domain(data).first;
+  TS::internal::thread_limit() = 1;
+  const Spline one(domain);
+  TS::internal::thread_limit() = 0;
+  const Spline all(domain);
+  ASSERT_EQ(one.number_of_rules(), all.number_of_rules());
+  EXPECT_EQ(one.number_of_stored_rules(), all.number_of_stored_rules());
+  EXPECT_EQ(all.number_of_stored_rules(), all.number_of_rules());
+  EXPECT_GT(all.rerouted_frames().size(), 20u); // links and re-routed ends between the steps
+  const std::vector<Spline::Rule> a = all.rules(), b = one.rules();
+  EXPECT_EQ(differing_rules(a, b), 0u);
+  EXPECT_TRUE(one.free_slots() == all.free_slots());
+  EXPECT_EQ(one.max_propagation_weight(), all.max_propagation_weight());
 }
 
 TEST(Certificate, OnlyExactZerosMakeAProof) {

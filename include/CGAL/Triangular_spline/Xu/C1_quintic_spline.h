@@ -13,6 +13,7 @@
 #include <CGAL/Triangular_spline/internal/frame_degeneracy.h>
 #include <CGAL/Triangular_spline/internal/filtered_orientation.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
+#include <CGAL/Triangular_spline/internal/parallel_vector.h>
 #include <CGAL/Triangular_spline/internal/release.h>
 #include <CGAL/Triangular_spline/internal/spline_plan.h>
 
@@ -830,14 +831,10 @@ private:
   // Appends a rule to the plan. An `implicit` rule is one implicit_rule() rebuilds from its
   // target with the same sources and weights: in double only its target is kept.
   // `largest`: largest_abs(weights) if the caller computed it already (on all cores).
-  void add_rule(Slot target, std::array<Slot, 3> sources, std::array<FT, 3> weights,
+  // The weights are swapped into the stored rule: the caller's array is left with zeros.
+  void add_rule(Slot target, std::array<Slot, 3> sources, std::array<FT, 3>&& weights,
                 bool implicit = false, double largest = -1) {
-    if (!(largest >= 0))
-      largest = largest_abs(weights);
-    const std::size_t k = std::size_t(kind(target));
-    m_max_weight = (std::max)(m_max_weight, largest);
-    m_max_weight_by_kind[k] = (std::max)(m_max_weight_by_kind[k], largest);
-    m_above_bound_by_kind[k] += largest > propagation_weight_bound ? 1 : 0;
+    note_weight(target, largest >= 0 ? largest : largest_abs(weights));
     if constexpr (!CGAL::Algebraic_structure_traits<FT>::Is_exact::value) {
       if (implicit) {
 #ifdef CGAL_TRIANGULAR_SPLINE_CHECK_IMPLICIT_RULES
@@ -859,6 +856,44 @@ private:
     using std::swap;
     for (std::size_t i = 0; i < 3; ++i)
       swap(rule.weights[i], weights[i]);
+  }
+  void add_rule(Slot target, std::array<Slot, 3> sources, const std::array<FT, 3>& weights) {
+    std::array<FT, 3> copy = weights;
+    add_rule(target, sources, std::move(copy));
+  }
+  void note_weight(Slot target, double largest) {
+    const std::size_t k = std::size_t(kind(target));
+    m_max_weight = (std::max)(m_max_weight, largest);
+    m_max_weight_by_kind[k] = (std::max)(m_max_weight_by_kind[k], largest);
+    m_above_bound_by_kind[k] += largest > propagation_weight_bound ? 1 : 0;
+  }
+
+  // Plans that store their rules make a step's rules on all cores, group by group
+  // (Parallel_vector::append_groups(), `first` the groups' offsets): exact plans in
+  // m_explicit_rules, where every rule is stored, and double plans that check their implicit
+  // rules in `scratch`, from where list_made_rule() passes them to add_rule(). Returns the
+  // index of the step's first rule. The listing then runs in plan order, as before.
+  static constexpr bool exact_plan = CGAL::Algebraic_structure_traits<FT>::Is_exact::value;
+  template <class Make>
+  std::size_t make_rules(internal::Parallel_vector<Rule>& scratch,
+                         const std::vector<std::size_t>& first, const Make& make) {
+    internal::Parallel_vector<Rule>& into = exact_plan ? m_explicit_rules : scratch;
+    if constexpr (!exact_plan)
+      scratch.clear();
+    const std::size_t base = into.size();
+    into.append_groups(first, internal::thread_count(first.back(), 1000), make);
+    return base;
+  }
+  void list_made_rule(internal::Parallel_vector<Rule>& scratch, std::size_t index, bool implicit,
+                      double largest) {
+    if constexpr (exact_plan) {
+      CGAL_USE(implicit);
+      note_weight(m_explicit_rules[index].target, largest);
+      m_rule_refs.push_back(explicit_rule_bit | static_cast<std::uint32_t>(index));
+    } else {
+      Rule& r = scratch[index];
+      add_rule(r.target, r.sources, std::move(r.weights), implicit, largest);
+    }
   }
 
   // Double plans keep their regular rules implicit, so build_plan_once() computes those
@@ -1332,7 +1367,7 @@ private:
   // right one, 0 not chosen here), the other's rule weights and their largest_abs().
   struct Flip_choices {
     std::vector<unsigned char> free_flip;
-    std::vector<std::array<FT, 3>> weights;
+    std::vector<std::optional<std::array<FT, 3>>> weights;
     std::vector<double> largest;
   };
 
@@ -1391,7 +1426,7 @@ private:
     }
     if (flips) {
       flips->free_flip.assign(E, 0);
-      flips->weights.resize(E);
+      flips->weights.assign(E, std::nullopt);
       flips->largest.assign(E, -1.0);
     }
     std::vector<char> exact_end(2 * std::size_t(E), 0), numerical_end(2 * std::size_t(E), 0);
@@ -1567,6 +1602,16 @@ private:
     }
   }
 
+  // Destroys the engaged values on all cores, then frees the vector: destroying the exact
+  // plan's millions of weights (GMP limbs) one by one was a serial step.
+  template <class T>
+  static void release_in_parallel(std::vector<std::optional<T>>& v) {
+    internal::parallel_for_index(
+        v.size(), internal::thread_count(v.size(), 1000), [&](std::size_t i) { v[i].reset(); },
+        256);
+    internal::release(v);
+  }
+
   // One round of the plan; `frames` the corner regions' frames (choose_frames()).
   // Plans that store their rules (exact ones) compute the rules' weights on all cores too,
   // corner regions by vertex, edge points by edge, before listing the rules in order: each
@@ -1585,10 +1630,11 @@ private:
     auto is_frame = [](const std::array<std::uint32_t, 3>& frame, std::size_t k) {
       return k == frame[0] || k == frame[1] || k == frame[2];
     };
-    // stored plans: the weights of vertex v's rules from corner_weights[corner_first[v]] on
-    std::vector<std::array<FT, 3>> corner_weights;
+    // stored plans: vertex v's rules from corner_base + corner_first[v] on (make_rules())
+    internal::Parallel_vector<Rule> scratch;
     std::vector<double> corner_largest; // largest_abs() of each, computed with it
     std::vector<std::size_t> corner_first;
+    std::size_t corner_base = 0;
     if constexpr (!parallel_plan) {
       corner_first.assign(std::size_t(V) + 1, 0);
       for (Index v = 0; v < V; ++v) {
@@ -1597,27 +1643,26 @@ private:
           rules += is_frame(frames[v], k) ? 0 : 1;
         corner_first[std::size_t(v) + 1] = corner_first[v] + rules;
       }
-      corner_weights.resize(corner_first.back());
       corner_largest.resize(corner_first.back());
       // a third of the stored rules, the rest mostly one or two per edge; a vector that grew
       // would copy its rules (GMP's move constructor is not noexcept)
       m_explicit_rules.reserve(corner_first.back() + 3 * std::size_t(E) + std::size_t(V) / 8);
-      internal::parallel_for_index(
-          V, internal::thread_count(V, 1000),
-          [&](std::size_t i) {
+      corner_base =
+          make_rules(scratch, corner_first, [&](std::size_t i, Rule* at, std::uint32_t& made) {
             const Index v = static_cast<Index>(i);
             const auto& frame = frames[i];
             const Point_2 &a = region_point(v, frame[0]), &b = region_point(v, frame[1]),
                           &c = region_point(v, frame[2]);
-            std::size_t next = corner_first[i];
+            const std::array<Slot, 3> sources{
+                {region_slot(v, frame[0]), region_slot(v, frame[1]), region_slot(v, frame[2])}};
             for (std::size_t k = 0; k <= m_domain.degree(v); ++k)
               if (!is_frame(frame, k)) {
-                corner_weights[next] = barycentric(region_point(v, k), a, b, c);
-                corner_largest[next] = largest_abs(corner_weights[next]);
-                ++next;
+                ::new (static_cast<void*>(at + made))
+                    Rule{region_slot(v, k), sources, barycentric(region_point(v, k), a, b, c)};
+                corner_largest[corner_first[i] + made] = largest_abs(at[made].weights);
+                ++made;
               }
-          },
-          256);
+          });
     }
     for (Index v = 0; v < V; ++v) {
       const std::size_t size = 1 + m_domain.degree(v);
@@ -1632,16 +1677,13 @@ private:
         if constexpr (parallel_plan)
           m_rule_refs.push_back(region_slot(v, k)); // implicit, weights counted above
         else {
-          add_rule(region_slot(v, k),
-                   {{region_slot(v, frame[0]), region_slot(v, frame[1]), region_slot(v, frame[2])}},
-                   std::move(corner_weights[next]), true, corner_largest[next]);
+          list_made_rule(scratch, corner_base + next, true, corner_largest[next]);
           ++next;
         }
       }
     }
     thin_edge_of_rule.assign(m_rule_refs.size(), Domain::null_index);
 
-    internal::release(corner_weights);
     internal::release(corner_largest);
     std::vector<std::optional<std::array<FT, 3>>> middle; // stored plans (route_edges())
     std::vector<double> middle_largest;
@@ -1847,6 +1889,37 @@ private:
             count_weight(w, edge_middle_slot(e, m_domain.edge(e)[std::size_t(side)]),
                          largest_abs(middle_weights(e, side)));
       });
+    // stored plans: edge e's regular rules from middle_base + middle_first[e] on
+    std::vector<std::size_t> middle_first;
+    std::size_t middle_base = 0;
+    if constexpr (!parallel_plan) {
+      middle_first.assign(std::size_t(E) + 1, 0);
+      for (Index e = 0; e < E; ++e)
+        middle_first[std::size_t(e) + 1] =
+            middle_first[e] + (implicit_middle(e, 0) ? 1 : 0) + (implicit_middle(e, 1) ? 1 : 0);
+      middle_base =
+          make_rules(scratch, middle_first, [&](std::size_t i, Rule* at, std::uint32_t& made) {
+            const Index e = static_cast<Index>(i);
+            const auto& ef = m_domain.edge_faces(e);
+            for (int side = 0; side < 2; ++side) {
+              if (!implicit_middle(e, side))
+                continue;
+              const Index r = m_domain.edge(e)[std::size_t(side)];
+              const std::size_t k = 2 * i + std::size_t(side);
+              const Slot target = edge_middle_slot(e, r);
+              const std::array<Slot, 3> sources{
+                  {corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}};
+              if (middle[k]) {
+                ::new (static_cast<void*>(at + made)) Rule{target, sources, std::move(*middle[k])};
+              } else {
+                ::new (static_cast<void*>(at + made))
+                    Rule{target, sources, middle_weights(e, side)};
+                middle_largest[k] = largest_abs(at[made].weights);
+              }
+              ++made;
+            }
+          });
+    }
     for (Index e = 0; e < E; ++e) {
       const auto& ends = m_domain.edge(e);
       if (m_domain.is_boundary_edge(e)) {
@@ -1856,7 +1929,7 @@ private:
         m_free[flip_slot(f, e)] = 1;
         continue;
       }
-      const auto& ef = m_domain.edge_faces(e);
+      [[maybe_unused]] std::size_t listed = 0; // of e's regular rules
       for (int side = 0; side < 2; ++side) {
         const Index r = ends[std::size_t(side)];
         if (routes[e].end == r)
@@ -1868,11 +1941,8 @@ private:
         if constexpr (parallel_plan) {
           m_rule_refs.push_back(edge_middle_slot(e, r)); // implicit, weights counted above
         } else {
-          const std::size_t k = 2 * std::size_t(e) + std::size_t(side);
-          std::optional<std::array<FT, 3>>& w = middle[k];
-          add_rule(edge_middle_slot(e, r),
-                   {{corner_inner_slot(ef[0], r), star_slot(e, r), corner_inner_slot(ef[1], r)}},
-                   w ? std::move(*w) : middle_weights(e, side), true, w ? middle_largest[k] : -1.0);
+          list_made_rule(scratch, middle_base + middle_first[e] + listed++, true,
+                         middle_largest[2 * std::size_t(e) + std::size_t(side)]);
         }
         thin_edge_of_rule.push_back(Domain::null_index);
       }
@@ -1923,28 +1993,46 @@ private:
     auto regular_edge = [&](Index e) {
       return !m_domain.is_boundary_edge(e) && routes[e].end == Domain::null_index;
     };
-    internal::release(middle);
+    release_in_parallel(middle);
     // stored plans: the chosen rule's weights by edge, and their largest_abs(), where
     // route_edges() did not choose
     std::vector<unsigned char>& free_flip = flips.free_flip;
-    std::vector<std::array<FT, 3>>& flip_weights_of = flips.weights;
+    std::vector<std::optional<std::array<FT, 3>>>& flip_weights_of = flips.weights;
     std::vector<double>& flip_largest = flips.largest;
+    // stored plans: edge e's rule at flip_base + flip_first[e] (make_rules())
+    std::vector<std::size_t> flip_first;
+    std::size_t flip_base = 0;
     if constexpr (!parallel_plan) {
-      internal::parallel_for_index(
-          E, internal::thread_count(E, 1000),
-          [&](std::size_t i) {
+      flip_first.assign(std::size_t(E) + 1, 0);
+      for (Index e = 0; e < E; ++e)
+        flip_first[std::size_t(e) + 1] = flip_first[e] + (regular_edge(e) ? 1 : 0);
+      flip_base =
+          make_rules(scratch, flip_first, [&](std::size_t i, Rule* at, std::uint32_t& made) {
             const Index e = static_cast<Index>(i);
-            if (!regular_edge(e) || free_flip[i] != 0)
+            if (!regular_edge(e))
               return;
-            std::array<FT, 3> right_from_left = flip_weights(e, true);
-            std::array<FT, 3> left_from_right = flip_weights(e, false);
-            const double right = largest_abs(right_from_left), left = largest_abs(left_from_right);
-            const bool left_free = !(left < right);
-            free_flip[i] = left_free ? 1 : 2;
-            flip_weights_of[i] = std::move(left_free ? right_from_left : left_from_right);
-            flip_largest[i] = left_free ? right : left;
-          },
-          256);
+            if (free_flip[i] == 0) {
+              std::array<FT, 3> right_from_left = flip_weights(e, true);
+              std::array<FT, 3> left_from_right = flip_weights(e, false);
+              const double right = largest_abs(right_from_left),
+                           left = largest_abs(left_from_right);
+              const bool left_free = !(left < right);
+              free_flip[i] = left_free ? 1 : 2;
+              flip_weights_of[i] = std::move(left_free ? right_from_left : left_from_right);
+              flip_largest[i] = left_free ? right : left;
+            }
+            const auto& ends = m_domain.edge(e);
+            const auto& ef = m_domain.edge_faces(e);
+            const bool left_free = free_flip[i] == 1;
+            const Index free_face = left_free ? ef[0] : ef[1],
+                        other_face = left_free ? ef[1] : ef[0];
+            ::new (static_cast<void*>(at))
+                Rule{flip_slot(other_face, e),
+                     {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]),
+                       edge_middle_slot(e, ends[1])}},
+                     std::move(*flip_weights_of[i])};
+            ++made;
+          });
     }
     if constexpr (parallel_plan) {
       free_flip.assign(E, 0);
@@ -1963,7 +2051,6 @@ private:
     for (Index e = 0; e < E; ++e) {
       if (!regular_edge(e))
         continue;
-      const auto& ends = m_domain.edge(e);
       const auto& ef = m_domain.edge_faces(e);
       const bool left_free = free_flip[e] == 1;
       const Index free_face = left_free ? ef[0] : ef[1], other_face = left_free ? ef[1] : ef[0];
@@ -1971,12 +2058,10 @@ private:
       if constexpr (parallel_plan)
         m_rule_refs.push_back(flip_slot(other_face, e)); // implicit, weights counted above
       else
-        add_rule(
-            flip_slot(other_face, e),
-            {{flip_slot(free_face, e), edge_middle_slot(e, ends[0]), edge_middle_slot(e, ends[1])}},
-            std::move(flip_weights_of[e]), true, flip_largest[e]);
+        list_made_rule(scratch, flip_base + flip_first[e], true, flip_largest[e]);
       thin_edge_of_rule.push_back(Domain::null_index);
     }
+    release_in_parallel(flip_weights_of);
   }
 
   // The closing link of a near-singular vertex r (its edge `closing`, the one link left
@@ -2160,7 +2245,7 @@ private:
       const Slot to = last ? target : static_cast<Slot>(m_free.size());
       if (!last)
         m_free.push_back(0); // the values are allocated after planning
-      add_rule(to, sources, weights);
+      add_rule(to, sources, std::move(weights));
       thin_edge_of_rule.push_back(Domain::null_index);
       sum = to;
     }
@@ -2422,7 +2507,7 @@ private:
   // (implicit_rule()), or explicit_rule_bit | its index in m_explicit_rules.
   static constexpr std::uint32_t explicit_rule_bit = std::uint32_t(1) << 31;
   std::vector<std::uint32_t> m_rule_refs;
-  std::vector<Rule> m_explicit_rules;
+  internal::Parallel_vector<Rule> m_explicit_rules;
   std::vector<std::uint8_t> m_frame_order; // frame_order_code() of each vertex's frame
   Degenerate_frame_analysis<Index> m_degenerate;
   std::vector<Degenerate_frame> m_frames;

@@ -247,6 +247,52 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       for (std::size_t i = 1; i < count; ++i)
         for (std::size_t j = i; j > 0 && before(j, j - 1); --j)
           std::swap(terms[j], terms[j - 1]);
+#ifdef __GMP_PLUSPLUS__
+    if constexpr (std::is_same_v<Value, mpq_class>) {
+      // Summed over the values' common denominator L (data of one decimal scale share it) and
+      // reduced once: the result is N / (5 L) with gcd(N, L) and gcd(N, 5) divided out (5 is
+      // prime), canonical. Rational products and sums reduce by gcds at each step: this
+      // took a third of an exact approximate fit's CPU (10^5 17-digit points).
+      static thread_local mpz_class N, L, g, t;
+      auto den = [&](std::size_t i) { return mpq_denref(values[terms[i].first].get_mpq_t()); };
+      auto num = [&](std::size_t i) { return mpq_numref(values[terms[i].first].get_mpq_t()); };
+      std::size_t big = 0;
+      for (std::size_t i = 1; i < count; ++i)
+        if (mpz_cmp(den(i), den(big)) > 0)
+          big = i;
+      mpz_set(L.get_mpz_t(), den(big));
+      for (std::size_t i = 0; i < count; ++i)
+        if (i != big && !mpz_divisible_p(L.get_mpz_t(), den(i))) {
+          mpz_gcd(g.get_mpz_t(), L.get_mpz_t(), den(i));
+          mpz_divexact(t.get_mpz_t(), den(i), g.get_mpz_t());
+          mpz_mul(L.get_mpz_t(), L.get_mpz_t(), t.get_mpz_t());
+        }
+      mpz_set_ui(N.get_mpz_t(), 0);
+      for (std::size_t i = 0; i < count; ++i) {
+        mpz_mul_ui(t.get_mpz_t(), num(i), static_cast<unsigned long>(terms[i].second));
+        if (mpz_cmp(L.get_mpz_t(), den(i)) != 0) {
+          mpz_divexact(g.get_mpz_t(), L.get_mpz_t(), den(i));
+          mpz_mul(t.get_mpz_t(), t.get_mpz_t(), g.get_mpz_t());
+        }
+        mpz_add(N.get_mpz_t(), N.get_mpz_t(), t.get_mpz_t());
+      }
+      Value sum;
+      if (mpz_sgn(N.get_mpz_t()) == 0)
+        return sum;
+      mpz_gcd(g.get_mpz_t(), N.get_mpz_t(), L.get_mpz_t());
+      if (mpz_cmp_ui(g.get_mpz_t(), 1) != 0) {
+        mpz_divexact(N.get_mpz_t(), N.get_mpz_t(), g.get_mpz_t());
+        mpz_divexact(L.get_mpz_t(), L.get_mpz_t(), g.get_mpz_t());
+      }
+      if (mpz_divisible_ui_p(N.get_mpz_t(), 5))
+        mpz_divexact_ui(N.get_mpz_t(), N.get_mpz_t(), 5);
+      else
+        mpz_mul_ui(L.get_mpz_t(), L.get_mpz_t(), 5);
+      mpz_set(mpq_numref(sum.get_mpq_t()), N.get_mpz_t());
+      mpz_set(mpq_denref(sum.get_mpq_t()), L.get_mpz_t());
+      return sum;
+    }
+#endif
     Value sum = Value_traits<Value>::zero();
     for (std::size_t i = 0; i < count; ++i)
       sum = sum + fifths[std::size_t(terms[i].second)] * values[terms[i].first];
