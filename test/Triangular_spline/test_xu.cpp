@@ -849,6 +849,29 @@ TEST(Certificate, NegativeOrderIsBadInput) {
   }
 }
 
+// A spline is saved from its nets (face_net(): references to its values, no patch built);
+// the text is its patches' (Patch_network), in double and exact builds, for heights and
+// parametric values, over more than one batch of faces (exact: 4096 a batch).
+TEST(SplineFile, FromNetsIsTheTextOfThePatches) {
+  const std::vector<Epick::Point_2> points = random_square_points(2600, 31);
+  std::vector<Exact_kernel::Point_2> exact_points;
+  for (const auto& p : points)
+    exact_points.emplace_back(p.x(), p.y());
+  auto check = [](auto spline) {
+    Random_rationals random(5);
+    randomize(spline, random);
+    std::ostringstream nets, patches;
+    TS::write_spline_file(nets, spline);
+    TS::write_spline_file(patches, TS::make_patch_network(spline));
+    EXPECT_GT(spline.domain().number_of_faces(), 4096u);
+    EXPECT_GT(nets.str().size(), 500000u);
+    EXPECT_TRUE(nets.str() == patches.str());
+  };
+  check(C1_quintic_spline<Epick>(delaunay_of<Epick>(points)));
+  check(C1_quintic_spline<Epick, Epick::Vector_3>(delaunay_of<Epick>(points)));
+  check(C1_quintic_spline<Exact_kernel>(delaunay_of<Exact_kernel>(exact_points)));
+}
+
 TEST(Certificate, AllCoresGiveTheSerialVerdictEdgeByEdge) {
   // 12000 random points, about 36000 interior edges: checked on every core (20000 edges per
   // thread at the least). Each entry must equal the serial check of its edge, in edge order,
