@@ -417,6 +417,18 @@ TYPED_TEST(Output, LocatorStaysLinearOnAFan) {
 // CGAL_TRIANGULAR_SPLINE_CHECK_IMPLICIT_RULES, which keeps test_xu's plans serial).
 // ---------------------------------------------------------------------------------------
 
+// The rules at which two plans of as many rules differ (target, sources or weights).
+template <class Rule>
+std::size_t differing_rules(const std::vector<Rule>& a, const std::vector<Rule>& b) {
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    differing +=
+        a[i].target == b[i].target && a[i].sources == b[i].sources && a[i].weights == b[i].weights
+            ? 0
+            : 1;
+  return differing;
+}
+
 TEST(Plan, OnAllCoresIsTheOneThreadPlan) {
   using Spline = TS::C1_quintic_spline<Epick>;
   std::mt19937 random(11);

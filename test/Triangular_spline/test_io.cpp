@@ -124,6 +124,32 @@ TEST(NumberParsing, ExactDecimalsAreExact) {
   EXPECT_GT(TS::parse_number<Exact_FT>("4.9406564584124654e-324"), Exact_FT(0));
 }
 
+// GMP rationals are parsed in GMP directly (digits, a power of ten, one gcd): random decimal
+// tokens give the value of the generic rational arithmetic (CGAL::Gmpq), in canonical form.
+TEST(NumberParsing, GmpDecimalsAreTheGenericRationals) {
+  static_assert(std::is_same_v<Exact_FT, mpq_class>);
+  std::mt19937 random(17);
+  for (int n = 0; n < 3000; ++n) {
+    std::string token = random() % 2 ? "-" : "";
+    const int before = int(random() % 25), after = int(random() % 25);
+    for (int i = 0; i < before; ++i)
+      token += char('0' + random() % 10);
+    if (after > 0 || before == 0)
+      token += '.';
+    for (int i = 0; i < after || (before == 0 && i == 0); ++i)
+      token += char('0' + random() % 10);
+    if (random() % 3 == 0)
+      token += "e" + std::to_string(int(random() % 121) - 60);
+    const Exact_FT fast = TS::parse_number<Exact_FT>(token);
+    const CGAL::Gmpq generic = TS::parse_number<CGAL::Gmpq>(token);
+    const mpq_class expected(generic.mpq());
+    EXPECT_TRUE(mpq_equal(fast.get_mpq_t(), expected.get_mpq_t())) << token;
+    mpz_class g;
+    mpz_gcd(g.get_mpz_t(), fast.get_num_mpz_t(), fast.get_den_mpz_t());
+    EXPECT_EQ(g, 1) << token;
+  }
+}
+
 TEST(NumberParsing, DoublesUseStrtod) {
   EXPECT_EQ(TS::parse_number<double>("0.1"), 0.1);
   EXPECT_EQ(TS::parse_number<double>("1e-3"), 1e-3);

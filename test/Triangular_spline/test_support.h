@@ -146,18 +146,6 @@ expect_weight_statistics_of_rules(const Spline& spline,
   return above;
 }
 
-// The rules at which two plans of as many rules differ (target, sources or weights).
-template <class Rule>
-std::size_t differing_rules(const std::vector<Rule>& a, const std::vector<Rule>& b) {
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    differing +=
-        a[i].target == b[i].target && a[i].sources == b[i].sources && a[i].weights == b[i].weights
-            ? 0
-            : 1;
-  return differing;
-}
-
 } // namespace ts_test
 
 #endif

@@ -29,6 +29,7 @@
 #include <CGAL/Triangular_spline/internal/filtered_orientation.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 #include <CGAL/Triangular_spline/internal/parallel_vector.h>
+#include <CGAL/Triangular_spline/internal/scattered_data_checks.h>
 
 #include <algorithm>
 #include <array>
@@ -1063,32 +1064,6 @@ TEST(Parallel, VectorMakesGroupsInPlaceAndUndoesAFailedAppend) {
     EXPECT_EQ(Counted_element::live.load(), int(before));
   }
   EXPECT_EQ(Counted_element::live.load(), 0);
-}
-
-// Exact plans make their stored rules on all cores (Parallel_vector) and list them in plan
-// order: the same rules, in the same order, on one thread and on all.
-TEST(Parallel, ExactPlanOnAllCoresIsTheOneThreadPlan) {
-  using Spline = C1_quintic_spline<Exact_kernel>;
-  std::mt19937 random(12);
-  std::uniform_real_distribution<double> uniform(0, 1);
-  TS::Scattered_data<Exact_kernel> data;
-  for (int i = 0; i < 4000; ++i) {
-    data.points.emplace_back(uniform(random), uniform(random));
-    data.values.emplace_back(0);
-  }
-  const Planar_domain<Exact_kernel> domain = TS::delaunay_domain(data).first;
-  TS::internal::thread_limit() = 1;
-  const Spline one(domain);
-  TS::internal::thread_limit() = 0;
-  const Spline all(domain);
-  ASSERT_EQ(one.number_of_rules(), all.number_of_rules());
-  EXPECT_EQ(one.number_of_stored_rules(), all.number_of_stored_rules());
-  EXPECT_EQ(all.number_of_stored_rules(), all.number_of_rules());
-  EXPECT_GT(all.rerouted_frames().size(), 20u); // links and re-routed ends between the steps
-  const std::vector<Spline::Rule> a = all.rules(), b = one.rules();
-  EXPECT_EQ(differing_rules(a, b), 0u);
-  EXPECT_TRUE(one.free_slots() == all.free_slots());
-  EXPECT_EQ(one.max_propagation_weight(), all.max_propagation_weight());
 }
 
 TEST(Certificate, OnlyExactZerosMakeAProof) {
@@ -2567,6 +2542,55 @@ TEST(DelaunayDomain, ExactKernelTriangulatesCocircularPointsAsTheDoubleOne) {
   exact.points.push_back(exact.points[5]);
   exact.values.push_back(0);
   EXPECT_THROW(TS::delaunay_domain(exact), TS::Invalid_input);
+}
+
+// Exact domains number their vertices along the Hilbert curve on indices, each comparison
+// decided by the coordinates' intervals where they are disjoint: the permutation of the
+// (point, handle) pairs sorted with exact comparisons, also where many coordinates are equal
+// as doubles (offsets of 10^-25) or exactly.
+TEST(DelaunayDomain, ExactHilbertOrderByIntervalsIsTheExactOrder) {
+  using K = Exact_kernel;
+  using FT = K::FT;
+  std::mt19937 random(9);
+  std::vector<K::Point_2> points;
+  const FT tiny = TS::parse_number<FT>("1e-25");
+  for (int i = 0; i < 3000; ++i) {
+    const FT x = FT(int(random() % 40)) / FT(40) + FT(int(random() % 3)) * tiny;
+    const FT y = FT(int(random() % 40)) / FT(40) - FT(int(random() % 3)) * tiny;
+    points.emplace_back(x, y);
+  }
+  std::vector<std::pair<K::Point_2, int>> pairs;
+  std::vector<TS::internal::Coordinate_intervals> intervals;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    pairs.emplace_back(points[i], int(i));
+    intervals.push_back(TS::internal::coordinate_intervals(points[i]));
+  }
+  std::vector<std::uint32_t> order(points.size());
+  std::iota(order.begin(), order.end(), 0u);
+  CGAL::hilbert_sort(pairs.begin(), pairs.end(),
+                     TS::internal::Lexicographic_hilbert_traits<K, int>(),
+                     CGAL::Hilbert_sort_median_policy());
+  CGAL::hilbert_sort(order.begin(), order.end(),
+                     TS::internal::Indexed_hilbert_traits<K>{&points, &intervals},
+                     CGAL::Hilbert_sort_median_policy());
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < order.size(); ++i)
+    differing += pairs[i].second == int(order[i]) ? 0 : 1;
+  EXPECT_EQ(differing, 0u);
+  // Duplicates are found exactly among such points: those 10^-25 apart stay, exact repeats
+  // (with the same value) merge.
+  TS::Scattered_data<K> data;
+  for (const auto& p : points)
+    data.points.push_back(p);
+  data.values.assign(points.size(), FT(0));
+  std::set<std::pair<FT, FT>> distinct;
+  for (const auto& p : points)
+    distinct.insert({p.x(), p.y()});
+  const TS::Scattered_data<K> merged = TS::internal::finish_scattered_data<K>(
+      data.points, data.values, {}, "points", [](std::size_t i) { return std::to_string(i); });
+  EXPECT_EQ(merged.points.size(), distinct.size());
+  EXPECT_EQ(merged.merged_duplicates, points.size() - distinct.size());
+  EXPECT_GT(merged.merged_duplicates, 0u);
 }
 
 TEST(DelaunayDomain, FlatTrianglesClosingAJitteredGridsHullAreRemoved) {

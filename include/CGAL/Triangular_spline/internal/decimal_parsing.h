@@ -14,12 +14,17 @@
 #include <CGAL/Interval_nt.h>
 #include <CGAL/number_utils.h>
 
+#if __has_include(<gmpxx.h>)
+#include <gmpxx.h>
+#endif
+
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace CGAL {
@@ -195,9 +200,29 @@ FT parse_exact(const std::string& token) {
   check_decimal_range(token, d);
   if (d.digits.empty())
     return FT(0);
-  const FT mantissa = integer_from_digits<FT>(d.digits);
-  FT value = d.exponent >= 0 ? FT(mantissa * power_of_ten<FT>(d.exponent))
-                             : FT(mantissa / power_of_ten<FT>(-d.exponent));
+  FT value;
+#ifdef __GMP_PLUSPLUS__
+  if constexpr (std::is_same_v<FT, mpq_class>) {
+    // In GMP directly: the digits as the numerator, times 10^e or over 10^-e, reduced by one
+    // gcd. (Rational products reduce by gcds at each step, nine digits at a time and for
+    // every square of 10: 10^5 17-digit points, 0.4 s of reading.)
+    const mpq_ptr q = value.get_mpq_t();
+    mpz_set_str(mpq_numref(q), d.digits.c_str(), 10);
+    if (d.exponent > 0) {
+      mpz_class power;
+      mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(d.exponent));
+      mpz_mul(mpq_numref(q), mpq_numref(q), power.get_mpz_t());
+    } else if (d.exponent < 0) {
+      mpz_ui_pow_ui(mpq_denref(q), 10, static_cast<unsigned long>(-d.exponent));
+      mpq_canonicalize(q);
+    }
+  } else
+#endif
+  {
+    const FT mantissa = integer_from_digits<FT>(d.digits);
+    value = d.exponent >= 0 ? FT(mantissa * power_of_ten<FT>(d.exponent))
+                            : FT(mantissa / power_of_ten<FT>(-d.exponent));
+  }
   // |x| < 10^(L + e); check_decimal_range() excluded |x| >= 10^151.
   if (static_cast<long long>(d.digits.size()) + d.exponent > max_decimal_exponent &&
       above_limit(value))

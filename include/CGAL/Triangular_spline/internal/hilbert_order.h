@@ -6,10 +6,15 @@
 
 // The Hilbert order in which domain_from_triangulation_2() numbers the vertices.
 
+#include <CGAL/Interval_nt.h>
 #include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
 
+#include <array>
+#include <cstdint>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Triangular_spline {
@@ -43,6 +48,58 @@ struct Lexicographic_hilbert_traits {
   };
   Less_x_2 less_x_2_object() const { return Less_x_2(); }
   Less_y_2 less_y_2_object() const { return Less_y_2(); }
+};
+
+// Enclosing intervals of a point's coordinates (CGAL::to_interval()), for comparisons of exact
+// coordinates that decide by intervals where they can (interval_compare()).
+using Coordinate_intervals = std::array<std::pair<double, double>, 2>;
+template <class Point_2>
+Coordinate_intervals coordinate_intervals(const Point_2& p) {
+  return {{CGAL::to_interval(p.x()), CGAL::to_interval(p.y())}};
+}
+// compare(a, b) for a in the interval ia and b in ib: the intervals decide when disjoint.
+template <class FT>
+CGAL::Comparison_result interval_compare(const FT& a, const std::pair<double, double>& ia,
+                                         const FT& b, const std::pair<double, double>& ib) {
+  if (ia.second < ib.first)
+    return CGAL::SMALLER;
+  if (ia.first > ib.second)
+    return CGAL::LARGER;
+  return CGAL::compare(a, b);
+}
+
+// The order of Lexicographic_hilbert_traits for points of an exact number type, on indices
+// into `points`: each coordinate's comparison decided by its enclosing intervals (computed
+// once) where they are disjoint, exactly only where they overlap. Comparing rationals
+// cross-multiplies them, and the sort moved (point, handle) pairs, two rationals each (10^5
+// 17-digit points: 0.35 s of the domain's numbering). Every comparison has the exact answer,
+// so the sort's permutation is the same.
+template <class GeomTraits>
+struct Indexed_hilbert_traits {
+  using Point_2 = std::uint32_t;
+  using Points = std::vector<typename GeomTraits::Point_2>;
+  using Intervals = std::vector<Coordinate_intervals>;
+  const Points* points;
+  const Intervals* intervals;
+  static CGAL::Comparison_result compare(const Points& p, const Intervals& i, Point_2 a, Point_2 b,
+                                         int c) {
+    return c == 0 ? interval_compare(p[a].x(), i[a][0], p[b].x(), i[b][0])
+                  : interval_compare(p[a].y(), i[a][1], p[b].y(), i[b][1]);
+  }
+  template <int First>
+  struct Less {
+    const Points* points;
+    const Intervals* intervals;
+    bool operator()(Point_2 a, Point_2 b) const {
+      const CGAL::Comparison_result r = compare(*points, *intervals, a, b, First);
+      return r != CGAL::EQUAL ? r == CGAL::SMALLER
+                              : compare(*points, *intervals, a, b, 1 - First) == CGAL::SMALLER;
+    }
+  };
+  using Less_x_2 = Less<0>;
+  using Less_y_2 = Less<1>;
+  Less_x_2 less_x_2_object() const { return {points, intervals}; }
+  Less_y_2 less_y_2_object() const { return {points, intervals}; }
 };
 
 } // namespace internal

@@ -10,6 +10,7 @@
 #include <CGAL/Triangular_spline/Domain/Scattered_data.h>
 #include <CGAL/Triangular_spline/IO/number_parsing.h>
 #include <CGAL/Triangular_spline/exceptions.h>
+#include <CGAL/Triangular_spline/internal/hilbert_order.h>
 #include <CGAL/Triangular_spline/internal/text.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include <cstddef>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -38,9 +40,25 @@ finish_scattered_data(const std::vector<typename GeomTraits::Point_2>& points,
   // each point is kept, in input order.
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
-  const auto less_xy = GeomTraits().less_xy_2_object();
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return less_xy(points[a], points[b]); });
+  if constexpr (std::is_floating_point_v<typename GeomTraits::FT>) {
+    const auto less_xy = GeomTraits().less_xy_2_object();
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return less_xy(points[a], points[b]); });
+  } else {
+    // Exact coordinates: the same order, each comparison decided by the coordinates'
+    // intervals where they are disjoint (rationals compare by cross-multiplying: 10^5
+    // 17-digit points, 0.25 s).
+    std::vector<Coordinate_intervals> intervals(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+      intervals[i] = coordinate_intervals(points[i]);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      const CGAL::Comparison_result x =
+          interval_compare(points[a].x(), intervals[a][0], points[b].x(), intervals[b][0]);
+      return x != CGAL::EQUAL ? x == CGAL::SMALLER
+                              : interval_compare(points[a].y(), intervals[a][1], points[b].y(),
+                                                 intervals[b][1]) == CGAL::SMALLER;
+    });
+  }
   std::vector<char> keep(points.size(), 1);
   Scattered_data<GeomTraits> data;
   for (std::size_t i = 1; i < order.size(); ++i) {
