@@ -1644,8 +1644,8 @@ private:
         corner_first[std::size_t(v) + 1] = corner_first[v] + rules;
       }
       corner_largest.resize(corner_first.back());
-      // a third of the stored rules, the rest mostly one or two per edge; a vector that grew
-      // would copy its rules (GMP's move constructor is not noexcept)
+      // a third of the stored rules, the rest mostly one or two per edge; a store that grew
+      // would move every rule on one core (each GMP fraction's move allocates)
       m_explicit_rules.reserve(corner_first.back() + 3 * std::size_t(E) + std::size_t(V) / 8);
       corner_base =
           make_rules(scratch, corner_first, [&](std::size_t i, Rule* at, std::uint32_t& made) {
