@@ -1152,7 +1152,9 @@ TEST(Plan, FilteredOrientationIsTheExactOrientation) {
   const K traits;
   std::mt19937 random(43);
   std::uniform_int_distribution<long> digits(-999999999L, 999999999L);
-  auto rational = [&] { return FT(digits(random)) / FT(digits(random) | 1); };
+  // `-> FT`: deduced, the return type is gmpxx's expression template, which refers to the two
+  // temporaries after they are gone (a SEGV inside GMP under AddressSanitizer)
+  auto rational = [&]() -> FT { return FT(digits(random)) / FT(digits(random) | 1); };
   std::array<std::size_t, 3> seen{}; // right turns, collinear, left turns
   auto check = [&](const K::Point_2& p, const K::Point_2& q, const K::Point_2& r) {
     const CGAL::Orientation exact = traits.orientation_2_object()(p, q, r);
@@ -1186,6 +1188,87 @@ TEST(Plan, FilteredOrientationIsTheExactOrientation) {
   EXPECT_GT(seen[0], 3000u);
   EXPECT_GT(seen[1], 3000u);
   EXPECT_GT(seen[2], 3000u);
+}
+
+// build_edges() numbers the edges vertex by vertex from the faces around each vertex, on all
+// cores: edges in increasing (smaller, larger) order, each with the face on its left (the one
+// traversing it smaller -> larger) and on its right, every face's edge i joining its other
+// two corners; the same on one core and all, and for any order and rotation of the input
+// triangles. An edge of three triangles, or of two on the same side, is refused by name.
+TEST(Domain, EdgesInVertexOrderWithTheirFacesOnAllCores) {
+  using K = Epick;
+  constexpr Index none = Planar_domain<K>::null_index;
+  std::mt19937 random(12);
+  std::uniform_real_distribution<double> unit(0, 1);
+  TS::Scattered_data<K> data;
+  for (int i = 0; i < 30000; ++i) {
+    data.points.emplace_back(unit(random), unit(random));
+    data.values.push_back(0);
+  }
+  const Planar_domain<K> domain = TS::delaunay_domain(data).first;
+  std::vector<std::array<Index, 3>> triangles = domain.faces();
+  std::shuffle(triangles.begin(), triangles.end(), random);
+  for (auto& t : triangles) {
+    std::rotate(t.begin(), t.begin() + random() % 3, t.end());
+    if (random() % 2 == 0)
+      std::swap(t[1], t[2]); // clockwise: reoriented
+  }
+  TS::internal::thread_limit() = 1;
+  const Planar_domain<K> one(domain.points(), triangles);
+  TS::internal::thread_limit() = 0;
+  const Planar_domain<K> all(domain.points(), triangles);
+  for (const Planar_domain<K>* d : {&domain, &one, &all}) {
+    ASSERT_EQ(d->number_of_edges(), domain.number_of_edges());
+    ASSERT_EQ(d->number_of_edges() + 1, d->number_of_vertices() + d->number_of_faces());
+    std::size_t boundary = 0;
+    for (Index e = 0; e < d->number_of_edges(); ++e) {
+      const std::array<Index, 2>& ends = d->edge(e);
+      ASSERT_LT(ends[0], ends[1]);
+      if (e > 0) {
+        ASSERT_LT(d->edge(e - 1), ends);
+      }
+      const std::array<Index, 2>& faces = d->edge_faces(e);
+      ASSERT_TRUE(faces[0] != none || faces[1] != none);
+      boundary += faces[0] == none || faces[1] == none ? 1 : 0;
+      for (int side = 0; side < 2; ++side) {
+        if (faces[std::size_t(side)] == none)
+          continue;
+        const std::array<Index, 3>& t = d->face(faces[std::size_t(side)]);
+        int at = -1, third = -1;
+        for (int i = 0; i < 3; ++i) {
+          if (t[std::size_t(i)] == ends[0])
+            at = i;
+          if (t[std::size_t(i)] != ends[0] && t[std::size_t(i)] != ends[1])
+            third = i;
+        }
+        ASSERT_GE(at, 0);
+        ASSERT_GE(third, 0);
+        EXPECT_EQ(t[std::size_t((at + 1) % 3)] == ends[1], side == 0) << e;
+        EXPECT_EQ(d->face_edge(faces[std::size_t(side)], third), e);
+      }
+    }
+    EXPECT_EQ(boundary, d->number_of_boundary_edges());
+    EXPECT_GT(boundary, 20u);
+  }
+  for (Index f = 0; f < one.number_of_faces(); ++f)
+    for (int i = 0; i < 3; ++i)
+      ASSERT_EQ(all.face_edge(f, i), one.face_edge(f, i));
+  // edge (0,0) (1,0) with triangles to (0.5, 1), (0.5, -1) and (0.5, -2): three of them; the
+  // last two alone, on the same side
+  auto message = [&](const std::vector<K::Point_2>& points,
+                     const std::vector<std::array<Index, 3>>& faces) {
+    try {
+      Planar_domain<K> bad(points, faces);
+    } catch (const TS::Invalid_input& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message({{0, 0}, {1, 0}, {0.5, 1}, {0.5, -1}, {0.5, -2}},
+                    {{{0, 1, 2}}, {{1, 0, 3}}, {{0, 1, 4}}}),
+            "domain: edge (0, 1) is shared by 3 triangles (non-manifold)");
+  EXPECT_EQ(message({{0, 0}, {1, 0}, {0.5, -1}, {0.5, -2}}, {{{0, 1, 2}}, {{1, 0, 3}}}),
+            "domain: triangles 0 and 1 overlap along edge (0, 1)");
 }
 
 // Planar_domain::orientation() decides from the coordinates' enclosures, converted once when
@@ -2498,6 +2581,73 @@ TEST(Certificate, RoundOffInASliverIsCheckedInTheLargerNeighboursFrame) {
   for (const TS::Multi_index index : {TS::Multi_index{3, 1, 1}, TS::Multi_index{1, 3, 1}})
     patches[sliver].set_control_point(index, patches[sliver].control_point(index) + 1e-6 * scale);
   EXPECT_FALSE(certify_patches().certified);
+}
+
+// delaunay_domain() inserts the points in the Hilbert order of its numbering and numbers
+// the vertices as it inserts them: the domain must be the one domain_from_triangulation_2()
+// makes of CGAL's own triangulation of the points (range insertion after CGAL's spatial
+// sort), less the same flat hull triangles. A grid (cocircular cells, decided by CGAL's
+// symbolic perturbation) whose right column is jittered by 1e-14 (fans of flat triangles
+// there) with random points in a corner, shuffled, in double and exactly.
+template <class K>
+void expect_the_domain_of_cgals_triangulation(const TS::Scattered_data<K>& data) {
+  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Epick>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vb, CGAL::Triangulation_face_base_2<Epick>>;
+  using Delaunay = CGAL::Delaunay_triangulation_2<Epick, Tds>;
+  std::vector<std::pair<Epick::Point_2, std::size_t>> indexed;
+  for (std::size_t i = 0; i < data.points.size(); ++i)
+    indexed.emplace_back(
+        Epick::Point_2(CGAL::to_double(data.points[i].x()), CGAL::to_double(data.points[i].y())),
+        i);
+  const Delaunay triangulation(indexed.begin(), indexed.end());
+  auto point_of = [&](typename Delaunay::Vertex_handle v) -> const typename K::Point_2& {
+    return data.points[v->info()];
+  };
+  const auto removed =
+      TS::internal::flat_hull_faces_of(triangulation, TS::flat_hull_sine, point_of);
+  std::vector<typename Delaunay::Vertex_handle> handles;
+  const Planar_domain<K> reference = TS::domain_from_triangulation_2<K>(
+      triangulation, [&](typename Delaunay::Face_handle f) { return !removed.is_defined(f); },
+      handles, point_of);
+  std::vector<std::size_t> index;
+  std::size_t flat = 0;
+  const auto [domain, values] = TS::delaunay_domain(data, &index, &flat);
+  EXPECT_GT(flat, 10u);
+  ASSERT_EQ(domain.number_of_vertices(), reference.number_of_vertices());
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    ASSERT_EQ(index[v], handles[v]->info());
+    ASSERT_TRUE(domain.point(v) == reference.point(v));
+    ASSERT_EQ(values[v], data.values[index[v]]);
+  }
+  EXPECT_EQ(domain.faces(), reference.faces());
+  ASSERT_EQ(domain.number_of_edges(), reference.number_of_edges());
+  for (Index e = 0; e < domain.number_of_edges(); ++e) {
+    ASSERT_EQ(domain.edge(e), reference.edge(e));
+    ASSERT_EQ(domain.edge_faces(e), reference.edge_faces(e));
+  }
+}
+
+TEST(DelaunayDomain, HilbertInsertionGivesTheDomainOfCGALsTriangulation) {
+  std::mt19937 random(21);
+  std::uniform_real_distribution<double> corner(0.05, 0.3);
+  TS::Scattered_data<Epick> data;
+  const int n = 24;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double jitter = i == n ? 1e-14 * double(int(random() % 3) - 1) : 0;
+      data.points.emplace_back(double(i) / n + jitter, double(j) / n);
+    }
+  for (int k = 0; k < 400; ++k)
+    data.points.emplace_back(corner(random), corner(random));
+  std::shuffle(data.points.begin(), data.points.end(), random);
+  TS::Scattered_data<Exact_kernel> exact;
+  for (const auto& p : data.points) {
+    data.values.push_back(std::sin(3 * p.x()) + p.y());
+    exact.points.emplace_back(p.x(), p.y());
+    exact.values.emplace_back(data.values.back());
+  }
+  expect_the_domain_of_cgals_triangulation(data);
+  expect_the_domain_of_cgals_triangulation(exact);
 }
 
 TEST(DelaunayDomain, ExactKernelTriangulatesCocircularPointsAsTheDoubleOne) {

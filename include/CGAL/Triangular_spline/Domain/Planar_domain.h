@@ -7,6 +7,7 @@
 #include <CGAL/Triangular_spline/exceptions.h>
 #include <CGAL/Triangular_spline/internal/filtered_orientation.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
+#include <CGAL/Triangular_spline/internal/release.h>
 #include <CGAL/Triangular_spline/internal/text.h>
 
 #include <CGAL/Algebraic_structure_traits.h>
@@ -14,6 +15,8 @@
 #include <CGAL/Cartesian_converter.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/number_utils.h>
+
+#include <boost/container/small_vector.hpp>
 
 #include <algorithm>
 #include <array>
@@ -84,8 +87,9 @@ public:
       : m_points(std::move(points)), m_faces(std::move(triangles)), m_traits(traits) {
     enclose_points();
     validate_and_orient();
-    build_edges();
-    build_stars();
+    Incidence incidence = face_incidence();
+    build_edges(incidence);
+    build_stars(incidence);
     if (check_overlaps)
       check_no_overlap();
   }
@@ -302,57 +306,114 @@ private:
                             " is not used by any triangle");
   }
 
-  void build_edges() {
-    // Half-edges (a -> b) of counter-clockwise faces, keyed by the unordered pair.
+  // The faces around each vertex (CSR: vertex v's are faces[offset[v] .. offset[v + 1]), in
+  // increasing order), read by build_edges() and build_stars().
+  struct Incidence {
+    std::vector<std::size_t> offset;
+    std::vector<Index> faces;
+  };
+  Incidence face_incidence() const {
+    const std::size_t n = m_points.size();
+    Incidence incidence;
+    incidence.offset.assign(n + 1, 0);
+    for (const auto& t : m_faces)
+      for (Index v : t)
+        ++incidence.offset[v + 1];
+    for (std::size_t v = 0; v < n; ++v)
+      incidence.offset[v + 1] += incidence.offset[v];
+    incidence.faces.resize(incidence.offset[n]);
+    std::vector<std::size_t> fill(incidence.offset.begin(), incidence.offset.end() - 1);
+    for (std::size_t f = 0; f < m_faces.size(); ++f)
+      for (Index v : m_faces[f])
+        incidence.faces[fill[v]++] = static_cast<Index>(f);
+    return incidence;
+  }
+
+  // The edges, numbered in the order of their (smaller, larger) vertex pairs, with their
+  // faces and each face's edges: vertex by vertex, from the half-edges of its faces to its
+  // larger neighbours (linear time, on all cores). A sort of all 3F half-edges took half of
+  // the conversion of a 10^6-point Delaunay triangulation, most of it faulting in the
+  // sort's 96 MB and the edge arrays' growth.
+  void build_edges(const Incidence& incidence) {
+    const std::size_t n = m_points.size();
     struct Half_edge {
-      std::uint64_t key;
+      Index other; // the larger end (the smaller is the vertex)
       Index face;
       int side;     // index of the edge in its face (opposite vertex)
-      bool forward; // a < b
+      bool forward; // traversed smaller -> larger by the counter-clockwise face
     };
-    std::vector<Half_edge> half_edges;
-    half_edges.reserve(3 * m_faces.size());
-    for (std::size_t f = 0; f < m_faces.size(); ++f)
-      for (int i = 0; i < 3; ++i) {
-        const Index a = m_faces[f][static_cast<std::size_t>((i + 1) % 3)];
-        const Index b = m_faces[f][static_cast<std::size_t>((i + 2) % 3)];
-        const Index lo = (std::min)(a, b), hi = (std::max)(a, b);
-        half_edges.push_back({(std::uint64_t(lo) << 32) | hi, static_cast<Index>(f), i, a < b});
+    using Half_edges = boost::container::small_vector<Half_edge, 24>;
+    // v's half-edges to larger neighbours, sorted by neighbour, faces in increasing order
+    auto upward = [&](Index v, Half_edges& out) {
+      out.clear();
+      for (std::size_t k = incidence.offset[v]; k < incidence.offset[v + 1]; ++k) {
+        const Index f = incidence.faces[k];
+        const auto& t = m_faces[f];
+        const int p = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+        const Index next = t[static_cast<std::size_t>((p + 1) % 3)];
+        const Index prev = t[static_cast<std::size_t>((p + 2) % 3)];
+        if (next > v)
+          out.push_back({next, f, (p + 2) % 3, true}); // v -> next, opposite prev
+        if (prev > v)
+          out.push_back({prev, f, (p + 1) % 3, false}); // prev -> v, opposite next
       }
-    std::sort(half_edges.begin(), half_edges.end(),
-              [](const Half_edge& x, const Half_edge& y) { return x.key < y.key; });
+      for (std::size_t i = 1; i < out.size(); ++i)
+        for (std::size_t j = i; j > 0 && out[j].other < out[j - 1].other; --j)
+          std::swap(out[j], out[j - 1]);
+    };
+    // calls edge(other, begin, end) for each of v's edges to a larger neighbour, in order,
+    // with its half-edges [begin, end), after checking that they form an edge
+    auto for_each_edge = [&](Index v, const Half_edges& h, const auto& edge) {
+      for (std::size_t i = 0; i < h.size();) {
+        std::size_t j = i;
+        while (j < h.size() && h[j].other == h[i].other)
+          ++j;
+        if (j - i > 2)
+          throw Invalid_input("domain: edge (" + std::to_string(v) + ", " +
+                              std::to_string(h[i].other) + ") is shared by " +
+                              std::to_string(j - i) + " triangles (non-manifold)");
+        if (j - i == 2 && h[i].forward == h[i + 1].forward)
+          throw Invalid_input("domain: triangles " + std::to_string(h[i].face) + " and " +
+                              std::to_string(h[i + 1].face) + " overlap along edge (" +
+                              std::to_string(v) + ", " + std::to_string(h[i].other) + ")");
+        edge(h.begin() + std::ptrdiff_t(i), h.begin() + std::ptrdiff_t(j));
+        i = j;
+      }
+    };
+    const std::size_t threads = internal::thread_count(n, 20000);
+    // each vertex's first edge (its count, then the sums)
+    std::vector<std::size_t> first_edge(n + 1, 0);
+    internal::parallel_for_index(n, threads, [&](std::size_t v) {
+      Half_edges h;
+      upward(static_cast<Index>(v), h);
+      for_each_edge(static_cast<Index>(v), h, [&](auto, auto) { ++first_edge[v + 1]; });
+    });
+    for (std::size_t v = 0; v < n; ++v)
+      first_edge[v + 1] += first_edge[v];
+    if (first_edge[n] >= null_index)
+      throw Invalid_input("domain: too many edges");
+    m_edges.resize(first_edge[n]);
+    m_edge_faces.resize(first_edge[n]);
     m_face_edges.assign(m_faces.size(), {{null_index, null_index, null_index}});
-    for (std::size_t i = 0; i < half_edges.size();) {
-      std::size_t j = i;
-      while (j < half_edges.size() && half_edges[j].key == half_edges[i].key)
-        ++j;
-      const Index lo = static_cast<Index>(half_edges[i].key >> 32);
-      const Index hi = static_cast<Index>(half_edges[i].key & 0xffffffffu);
-      if (j - i > 2)
-        throw Invalid_input("domain: edge (" + std::to_string(lo) + ", " + std::to_string(hi) +
-                            ") is shared by " + std::to_string(j - i) +
-                            " triangles (non-manifold)");
-      const Index e = static_cast<Index>(m_edges.size());
-      m_edges.push_back({{lo, hi}});
-      std::array<Index, 2> faces{{null_index, null_index}};
-      for (std::size_t h = i; h < j; ++h) {
-        // A face traversing lo -> hi counter-clockwise lies on the left of the edge.
-        Index& slot = faces[half_edges[h].forward ? 0 : 1];
-        if (slot != null_index)
-          throw Invalid_input("domain: triangles " + std::to_string(slot) + " and " +
-                              std::to_string(half_edges[h].face) + " overlap along edge (" +
-                              std::to_string(lo) + ", " + std::to_string(hi) + ")");
-        slot = half_edges[h].face;
-        m_face_edges[half_edges[h].face][static_cast<std::size_t>(half_edges[h].side)] = e;
-      }
-      m_edge_faces.push_back(faces);
+    internal::parallel_for_index(n, threads, [&](std::size_t v) {
+      Half_edges h;
+      upward(static_cast<Index>(v), h);
+      Index e = static_cast<Index>(first_edge[v]);
+      for_each_edge(static_cast<Index>(v), h, [&](auto begin, auto end) {
+        m_edges[e] = {{static_cast<Index>(v), begin->other}};
+        // a face traversing smaller -> larger counter-clockwise lies on the left of the edge
+        std::array<Index, 2> faces{{null_index, null_index}};
+        for (auto it = begin; it != end; ++it) {
+          faces[it->forward ? 0 : 1] = it->face;
+          m_face_edges[it->face][static_cast<std::size_t>(it->side)] = e;
+        }
+        m_edge_faces[e++] = faces;
+      });
+    });
+    m_boundary_edges = 0;
+    for (const auto& faces : m_edge_faces)
       if (faces[0] == null_index || faces[1] == null_index)
         ++m_boundary_edges;
-      i = j;
-    }
-    // The edges were appended: their doubled capacity would outlive the domain's build.
-    m_edges.shrink_to_fit();
-    m_edge_faces.shrink_to_fit();
     count_components_and_loops();
   }
 
@@ -393,21 +454,11 @@ private:
         ++m_boundary_loops;
   }
 
-  void build_stars() {
+  // The faces around each vertex ordered into one fan.
+  void build_stars(Incidence& incidence) {
     const std::size_t n = m_points.size();
-    // Faces per vertex (CSR), then ordered into one fan per vertex.
-    std::vector<std::size_t> count(n + 1, 0);
-    for (const auto& t : m_faces)
-      for (Index v : t)
-        ++count[v + 1];
-    std::vector<std::size_t> offset(n + 1, 0);
-    for (std::size_t v = 0; v < n; ++v)
-      offset[v + 1] = offset[v] + count[v + 1];
-    std::vector<Index> incident(offset[n]);
-    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
-    for (std::size_t f = 0; f < m_faces.size(); ++f)
-      for (Index v : m_faces[f])
-        incident[fill[v]++] = static_cast<Index>(f);
+    const std::vector<std::size_t>& offset = incidence.offset;
+    const std::vector<Index>& incident = incidence.faces;
 
     m_vertex_boundary.assign(n, 0);
     m_face_offsets.assign(n + 1, 0);
@@ -487,6 +538,8 @@ private:
       m_face_offsets[v + 1] = m_star_faces.size();
       m_neighbour_offsets[v + 1] = m_star_neighbours.size();
     }
+    internal::release(incidence.faces); // (`incident` and `offset` are not read again)
+    internal::release(incidence.offset);
     // The fan must turn once (interior) or less than once (boundary): no later cone may
     // contain the direction of the first neighbour (exact orientation tests). Vertex by
     // vertex on all cores, once every fan is built: the error of the first bad vertex.

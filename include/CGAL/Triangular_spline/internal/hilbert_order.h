@@ -8,9 +8,11 @@
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/enum.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/number_utils.h>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 #include <utility>
@@ -101,6 +103,38 @@ struct Indexed_hilbert_traits {
   Less_x_2 less_x_2_object() const { return {points, intervals}; }
   Less_y_2 less_y_2_object() const { return {points, intervals}; }
 };
+
+// The permutation that puts distinct `points` in the order above: order[r] is the index of
+// the r-th point. The order is strict and total and CGAL's median Hilbert sort splits down
+// to single points, so it depends on the points alone, not on their order in the input.
+template <class GeomTraits>
+std::vector<std::uint32_t>
+hilbert_permutation(const std::vector<typename GeomTraits::Point_2>& points) {
+  std::vector<std::uint32_t> order(points.size());
+  if constexpr (std::is_floating_point_v<typename GeomTraits::FT>) {
+    // (point, index) pairs: the sort's passes read them in sequence
+    std::vector<std::pair<typename GeomTraits::Point_2, std::uint32_t>> pairs;
+    pairs.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+      pairs.emplace_back(points[i], static_cast<std::uint32_t>(i));
+    CGAL::hilbert_sort(pairs.begin(), pairs.end(),
+                       Lexicographic_hilbert_traits<GeomTraits, std::uint32_t>(),
+                       CGAL::Hilbert_sort_median_policy());
+    for (std::size_t r = 0; r < pairs.size(); ++r)
+      order[r] = pairs[r].second;
+  } else {
+    std::vector<Coordinate_intervals> intervals;
+    intervals.reserve(points.size());
+    for (const auto& p : points)
+      intervals.push_back(coordinate_intervals(p));
+    for (std::size_t i = 0; i < order.size(); ++i)
+      order[i] = static_cast<std::uint32_t>(i);
+    CGAL::hilbert_sort(order.begin(), order.end(),
+                       Indexed_hilbert_traits<GeomTraits>{&points, &intervals},
+                       CGAL::Hilbert_sort_median_policy());
+  }
+  return order;
+}
 
 } // namespace internal
 } // namespace Triangular_spline
