@@ -2743,6 +2743,67 @@ TEST(DelaunayDomain, ExactHilbertOrderByIntervalsIsTheExactOrder) {
   EXPECT_GT(merged.merged_duplicates, 0u);
 }
 
+// Double data are first checked for repeated points by a hash table: where it finds none,
+// the points are kept as they are, which is what the sort and merge do then; where it finds
+// one, the sort merges. Random points, a grid with signed zeros, points on one vertical
+// line but one; planted exact repeats (one as -0 against 0) merged as by the sort; a contradicting
+// repeat refused with both names.
+TEST(ScatteredData, RepeatsFoundByHashingAreMergedAsBySorting) {
+  using K = Epick;
+  namespace TSI = TS::internal;
+  auto where = [](std::size_t i) { return "point " + std::to_string(i); };
+  std::mt19937 random(31);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<std::vector<K::Point_2>> sets(3);
+  for (int i = 0; i < 20000; ++i)
+    sets[0].emplace_back(unit(random), unit(random));
+  for (int i = -60; i <= 60; ++i)
+    for (int j = -60; j <= 60; ++j)
+      sets[1].emplace_back(i == 0 ? -0.0 : i / 64.0, j == 0 ? -0.0 : j / 64.0);
+  sets[2].emplace_back(0.7, 0.1); // (not all collinear)
+  for (int i = 0; i < 20000; ++i)
+    sets[2].emplace_back(0.5, i * 1e-3);
+  for (auto& points : sets) {
+    std::vector<double> values;
+    for (const auto& p : points)
+      values.push_back(p.x() - 2 * p.y());
+    EXPECT_FALSE(TSI::may_repeat_a_point(points));
+    const auto kept = TSI::finish_scattered_data<K>(points, values, {}, "set", where);
+    EXPECT_EQ(kept.points, points);
+    EXPECT_EQ(kept.values, values);
+    EXPECT_EQ(kept.merged_duplicates, 0u);
+    // repeats: 40 random copies, and (0, 0) against (-0, 0)
+    for (int k = 0; k < 40; ++k) {
+      const std::size_t i = random() % points.size();
+      points.push_back(points[i]);
+      values.push_back(values[i]);
+    }
+    points.emplace_back(0.0, 0.0);
+    values.push_back(0.0);
+    points.emplace_back(-0.0, 0.0);
+    values.push_back(0.0);
+    EXPECT_TRUE(TSI::may_repeat_a_point(points));
+    const auto merged = TSI::finish_scattered_data<K>(points, values, {}, "set", where);
+    const auto sorted = TSI::merge_duplicates<K>(points, values, {}, where);
+    EXPECT_EQ(merged.points, sorted.points);
+    EXPECT_EQ(merged.values, sorted.values);
+    EXPECT_EQ(merged.merged_duplicates, sorted.merged_duplicates);
+    EXPECT_GE(merged.merged_duplicates, 41u);
+    EXPECT_LT(merged.points.size(), points.size());
+    values.back() = 1; // (-0, 0) now contradicts the (0, 0) before it
+    EXPECT_THROW(
+        {
+          try {
+            TSI::finish_scattered_data<K>(points, values, {}, "set", where);
+          } catch (const TS::Invalid_input& e) {
+            EXPECT_NE(std::string(e.what()).find("has different heights"), std::string::npos);
+            throw;
+          }
+        },
+        TS::Invalid_input);
+  }
+}
+
 TEST(DelaunayDomain, FlatTrianglesClosingAJitteredGridsHullAreRemoved) {
   // A 33 x 33 grid jittered by 1e-14: Delaunay closes the nearly straight hull with fans of
   // slivers (relative heights near 1e-14). Removed, every hull point is on the boundary
