@@ -361,8 +361,8 @@ private:
         for (std::size_t j = i; j > 0 && out[j].other < out[j - 1].other; --j)
           std::swap(out[j], out[j - 1]);
     };
-    // calls edge(other, begin, end) for each of v's edges to a larger neighbour, in order,
-    // with its half-edges [begin, end), after checking that they form an edge
+    // calls edge(begin, end) for each of v's edges to a larger neighbour, in order, with its
+    // half-edges [begin, end), after checking that they form an edge
     auto for_each_edge = [&](Index v, const Half_edges& h, const auto& edge) {
       for (std::size_t i = 0; i < h.size();) {
         std::size_t j = i;
@@ -381,7 +381,8 @@ private:
       }
     };
     const std::size_t threads = internal::thread_count(n, 20000);
-    // each vertex's first edge (its count, then the sums)
+    // each vertex's first edge (its count, then the sums); the half-edges are gathered again
+    // below (kept, they would take the memory this avoids)
     std::vector<std::size_t> first_edge(n + 1, 0);
     internal::parallel_for_index(n, threads, [&](std::size_t v) {
       Half_edges h;
