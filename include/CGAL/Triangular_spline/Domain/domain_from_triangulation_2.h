@@ -9,14 +9,12 @@
 #include <CGAL/Triangular_spline/internal/release.h>
 
 #include <CGAL/Unique_hash_map.h>
-#include <CGAL/hilbert_sort.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -134,51 +132,24 @@ domain_from_triangulation_2(const Triangulation& triangulation, const InDomain& 
   // Vertices are numbered along a Hilbert curve: neighbours get near indices, which keeps
   // every later pass over the domain cache-friendly. A hash map by handle, not a std::map.
   CGAL::Unique_hash_map<Vertex_handle, Index> index(none, triangulation.number_of_vertices());
+  std::vector<Point_2> used;
+  std::vector<Vertex_handle> handles;
+  for (auto f : triangulation.finite_face_handles())
+    if (in_domain(f))
+      for (int i = 0; i < 3; ++i)
+        if (index[f->vertex(i)] == none) {
+          index[f->vertex(i)] = 0;
+          used.push_back(point_of(f->vertex(i)));
+          handles.push_back(f->vertex(i));
+        }
+  const std::vector<std::uint32_t> order = internal::hilbert_permutation<GeomTraits>(used);
   std::vector<Point_2> points;
+  points.reserve(used.size());
   vertex_map.clear();
-  if constexpr (std::is_floating_point_v<typename GeomTraits::FT>) {
-    std::vector<std::pair<Point_2, Vertex_handle>> used;
-    for (auto f : triangulation.finite_face_handles())
-      if (in_domain(f))
-        for (int i = 0; i < 3; ++i)
-          if (index[f->vertex(i)] == none) {
-            index[f->vertex(i)] = 0;
-            used.emplace_back(point_of(f->vertex(i)), f->vertex(i));
-          }
-    CGAL::hilbert_sort(used.begin(), used.end(),
-                       internal::Lexicographic_hilbert_traits<GeomTraits, Vertex_handle>(),
-                       CGAL::Hilbert_sort_median_policy());
-    points.reserve(used.size());
-    for (const auto& [point, v] : used) {
-      index[v] = static_cast<Index>(points.size());
-      points.push_back(point);
-      vertex_map.push_back(v);
-    }
-  } else { // the same order, on indices, comparisons by intervals first
-    std::vector<Point_2> used;
-    std::vector<internal::Coordinate_intervals> intervals;
-    std::vector<Vertex_handle> handles;
-    for (auto f : triangulation.finite_face_handles())
-      if (in_domain(f))
-        for (int i = 0; i < 3; ++i)
-          if (index[f->vertex(i)] == none) {
-            index[f->vertex(i)] = 0;
-            used.push_back(point_of(f->vertex(i)));
-            intervals.push_back(internal::coordinate_intervals(used.back()));
-            handles.push_back(f->vertex(i));
-          }
-    std::vector<std::uint32_t> order(used.size());
-    for (std::size_t i = 0; i < order.size(); ++i)
-      order[i] = static_cast<std::uint32_t>(i);
-    CGAL::hilbert_sort(order.begin(), order.end(),
-                       internal::Indexed_hilbert_traits<GeomTraits>{&used, &intervals},
-                       CGAL::Hilbert_sort_median_policy());
-    points.reserve(used.size());
-    for (std::uint32_t i : order) {
-      index[handles[i]] = static_cast<Index>(points.size());
-      points.push_back(used[i]); // a copy: its limbs allocated in Hilbert order, near each other
-      vertex_map.push_back(handles[i]);
-    }
+  for (std::uint32_t i : order) {
+    index[handles[i]] = static_cast<Index>(points.size());
+    points.push_back(used[i]); // a copy: exact limbs allocated in Hilbert order, near each other
+    vertex_map.push_back(handles[i]);
   }
   std::vector<std::array<Index, 3>> triangles;
   triangles.reserve(triangulation.number_of_faces());
