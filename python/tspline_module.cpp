@@ -56,6 +56,9 @@ using Points = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 // Queries are evaluated in chunks: bounds the jets held at once for 10^6-point queries.
 constexpr std::size_t chunk_size = std::size_t(1) << 16;
+// Values alone hold 24 bytes a query: larger chunks, so that queries in no spatial order
+// are sorted by bucket over more of them (10^6 random queries: 2.7 M/s in chunks of 2^16).
+constexpr std::size_t value_chunk_size = std::size_t(1) << 20;
 
 // The rows of an (n, columns) array, checked (the Python layer reshapes; this is the guard).
 const double* rows(const Points& a, py::ssize_t columns, const char* what, std::size_t& n) {
@@ -266,13 +269,15 @@ public:
       py::gil_scoped_release release;
       const double nan = std::numeric_limits<double>::quiet_NaN();
       std::vector<Point_2> points;
-      for (std::size_t begin = 0; begin < n; begin += chunk_size) {
-        const std::size_t end = (std::min)(n, begin + chunk_size);
+      const bool values_only = order == 0 && outside == TS::Outside::NO_VALUE;
+      const std::size_t chunk = values_only ? value_chunk_size : chunk_size;
+      for (std::size_t begin = 0; begin < n; begin += chunk) {
+        const std::size_t end = (std::min)(n, begin + chunk);
         points.clear();
         for (std::size_t i = begin; i < end; ++i)
           points.emplace_back(q[2 * i], q[2 * i + 1]);
         double* row = out + begin * static_cast<std::size_t>(columns);
-        if (order == 0 && outside == TS::Outside::NO_VALUE) {
+        if (values_only) {
           // values only: the call `tspline c1 --query` makes
           const std::vector<double> values =
               TS::evaluate_functional(*m_network, *m_locator, points);

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -825,17 +826,28 @@ TEST(Jets, C1SplineFittedToACubicHasTheCubicsDerivativesExactly) {
   }
 }
 
+namespace {
+
+// The local-polynomial spline of sin(3x) cos(2y) at 300 random points (double).
+TS::C1_quintic_spline<Epick> smooth_spline(unsigned seed) {
+  Delaunay<Epick> dt;
+  const Planar_domain<Epick> domain = delaunay_domain<Epick>(dt, seed, 300);
+  std::vector<double> values;
+  for (const auto& p : domain.points())
+    values.push_back(std::sin(3 * p.x()) * std::cos(2 * p.y()));
+  TS::C1_quintic_spline<Epick> spline(domain, TS::Corner_frame::CORNER_AND_TWO_STARS);
+  TS::fit_vertex_data(spline, values, TS::Fit::LOCAL_POLYNOMIAL, 5);
+  return spline;
+}
+
+} // namespace
+
 // Many queries run on all cores (double): every result must be bit for bit the one of a
 // single query (always on the calling thread), inside, outside and extrapolated.
 TEST(Jets, ManyQueriesOnAllCoresMatchOneAtATime) {
   using K = Epick;
-  Delaunay<K> dt;
-  const Planar_domain<K> domain = delaunay_domain<K>(dt, 53, 300);
-  std::vector<double> values;
-  for (const auto& p : domain.points())
-    values.push_back(std::sin(3 * p.x()) * std::cos(2 * p.y()));
-  TS::C1_quintic_spline<K> spline(domain, TS::Corner_frame::CORNER_AND_TWO_STARS);
-  TS::fit_vertex_data(spline, values, TS::Fit::LOCAL_POLYNOMIAL, 5);
+  const TS::C1_quintic_spline<K> spline = smooth_spline(53);
+  const Planar_domain<K>& domain = spline.domain();
   const Domain_locator<K> locator(spline.domain());
   // random points over a box a little larger than the hull, so some fall outside
   std::mt19937_64 engine(7);
@@ -926,6 +938,9 @@ TEST(Locator, EvaluationOrderGroupsRandomQueriesByBucket) {
   }
   EXPECT_EQ(locator.bucket(random.back()), locator.number_of_buckets());
   EXPECT_TRUE(TS::internal::evaluation_order(locator, grid).empty());
+  std::vector<K::Point_2> sorted(random.begin(), random.end() - 1); // spatially ordered
+  CGAL::hilbert_sort(sorted.begin(), sorted.end());
+  EXPECT_TRUE(TS::internal::evaluation_order(locator, sorted).empty());
   random.resize(19999);
   EXPECT_TRUE(TS::internal::evaluation_order(locator, random).empty());
 }
@@ -959,6 +974,205 @@ TEST(Locator, TriesTheHintFirst) {
   }
   EXPECT_GT(tried, 200u);
   EXPECT_FALSE(locator.locate_snapped(K::Point_2(std::nan(""), 0), 0).has_value());
+}
+
+TYPED_TEST(Output, HintedLocationsWalkToTheFaceOfThePoint) {
+  // From any hint, near or far, inside or outside the domain, on a convex domain and on one
+  // with a hole: the face found contains the point (exact orientations), and a point inside
+  // one face only gets that face with the very coordinates of the unhinted location; a
+  // point on an edge or a vertex gets a face around it, with the same point's coordinates.
+  using K = TypeParam;
+  using FT = typename K::FT;
+  Delaunay<K> dt;
+  std::vector<std::pair<std::string, Planar_domain<K>>> domains;
+  domains.emplace_back("delaunay", delaunay_domain<K>(dt, 23, 400));
+  domains.emplace_back("ring", ring_domain<K>());
+  Random_rationals random(29);
+  for (const auto& [name, domain] : domains) {
+    const Domain_locator<K> locator(domain);
+    const Index F = static_cast<Index>(domain.number_of_faces());
+    std::size_t inside = 0, on_edges = 0;
+    auto contains = [&](Index f, const typename K::Point_2& p) {
+      const auto& t = domain.face(f);
+      for (int i = 0; i < 3; ++i)
+        if (CGAL::orientation(domain.point(t[std::size_t(i)]),
+                              domain.point(t[std::size_t((i + 1) % 3)]), p) == CGAL::RIGHT_TURN)
+          return false;
+      return true;
+    };
+    // random points over the domain's box and beyond it, and points of edges and vertices
+    const int extent = name == "ring" ? 4 : 24, denominator = name == "ring" ? 5 : 7;
+    std::vector<typename K::Point_2> points;
+    for (int i = 0; i < 300; ++i)
+      points.emplace_back(random.rational<FT>(extent, denominator),
+                          random.rational<FT>(extent, denominator));
+    for (Index f = 0; f < F; f += 3) {
+      const auto& t = domain.face(f);
+      const FT w = FT(random.integer(1, 9)) / FT(10);
+      points.push_back(CGAL::barycenter(domain.point(t[0]), w, domain.point(t[1]), FT(1) - w));
+      points.push_back(domain.point(t[2]));
+    }
+    for (const auto& p : points) {
+      const auto plain = locator.locate_snapped(p);
+      for (const Index hint : {Index(0), Index(F / 2), Index(F - 1), plain ? plain->face : 0}) {
+        const auto hinted = locator.locate_snapped(p, hint);
+        ASSERT_EQ(hinted.has_value(), plain.has_value()) << name << " " << p;
+        if (!plain)
+          continue;
+        if (!contains(plain->face, p)) { // snapped onto the boundary: the same either way
+          EXPECT_EQ(hinted->face, plain->face);
+          continue;
+        }
+        ASSERT_TRUE(contains(hinted->face, p)) << name << " " << p << " hint " << hint;
+        const auto& b = plain->barycentric;
+        if (b[0] > FT(0) && b[1] > FT(0) && b[2] > FT(0)) {
+          EXPECT_EQ(hinted->face, plain->face) << name << " " << p;
+          EXPECT_TRUE(hinted->barycentric == plain->barycentric);
+          ++inside;
+        } else {
+          // the same point, in the coordinates of another face around it
+          const auto& t = domain.face(hinted->face);
+          const auto& c = hinted->barycentric;
+          const FT x = c[0] * domain.point(t[0]).x() + c[1] * domain.point(t[1]).x() +
+                       c[2] * domain.point(t[2]).x();
+          if constexpr (is_exact<K>)
+            EXPECT_EQ(x, p.x());
+          else // coordinates up to 24, weights from rounded areas: a few ulps
+            EXPECT_NEAR(CGAL::to_double(x), CGAL::to_double(p.x()), 1e-12);
+          ++on_edges;
+        }
+      }
+    }
+    EXPECT_GT(inside, 50u) << name;
+    EXPECT_GT(on_edges, 20u) << name;
+  }
+}
+
+TEST(Locator, FilteredSidesDecideAsExactOrientations) {
+  // Points a few ulps from the line of an edge, in double and the same points in rationals:
+  // the faces found are the exact kernel's, and so are the zero coordinates of the points
+  // exactly on an edge.
+  using K = Epick;
+  Delaunay<K> dt;
+  const Planar_domain<K> domain = delaunay_domain<K>(dt, 31, 200);
+  std::vector<Exact_kernel::Point_2> exact_points;
+  for (const auto& p : domain.points())
+    exact_points.emplace_back(p.x(), p.y());
+  std::vector<std::array<Index, 3>> faces;
+  for (Index f = 0; f < domain.number_of_faces(); ++f)
+    faces.push_back(domain.face(f));
+  const Planar_domain<Exact_kernel> exact_domain(std::move(exact_points), std::move(faces));
+  const Domain_locator<K> locator(domain);
+  const Domain_locator<Exact_kernel> exact_locator(exact_domain);
+  std::mt19937_64 engine(3);
+  std::uniform_real_distribution<double> t(0.01, 0.99);
+  std::size_t decided = 0, on_line = 0;
+  for (Index e = 0; e < domain.number_of_edges(); ++e) {
+    const auto& a = domain.point(domain.edge(e)[0]);
+    const auto& b = domain.point(domain.edge(e)[1]);
+    const double s = t(engine);
+    const double x = a.x() + s * (b.x() - a.x()), y = a.y() + s * (b.y() - a.y());
+    for (int dx = -3; dx <= 3; ++dx) {
+      double px = x;
+      for (int k = 0; k < std::abs(dx); ++k)
+        px = std::nextafter(px, dx > 0 ? HUGE_VAL : -HUGE_VAL);
+      const K::Point_2 p(px, y);
+      const auto found = locator.locate(p);
+      const auto exact = exact_locator.locate(Exact_kernel::Point_2(px, y));
+      ASSERT_EQ(found.has_value(), exact.has_value()) << p;
+      if (!found)
+        continue;
+      EXPECT_EQ(found->face, exact->face) << p;
+      // exactly on an edge: a zero coordinate (off it, the rounded area may be zero too)
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (CGAL::is_zero(exact->barycentric[i])) {
+          EXPECT_EQ(found->barycentric[i], 0.0) << p;
+        }
+      }
+      on_line +=
+          CGAL::is_zero(exact->barycentric[0] * exact->barycentric[1] * exact->barycentric[2]) ? 1
+                                                                                               : 0;
+      ++decided;
+    }
+  }
+  EXPECT_GT(decided, 2000u);
+  EXPECT_GT(on_line, 10u); // some of the points are exactly on their edge
+}
+
+TEST(Evaluate, NetsKeptFromQueryToQueryFollowTheValues) {
+  // Sorted queries reuse the net of the previous query's face within a call; a later call
+  // sees the spline's new values, and another spline's on the same domain.
+  using K = Epick;
+  TS::C1_quintic_spline<K> spline = smooth_spline(37);
+  TS::C1_quintic_spline<K> other = spline;
+  for (const auto s : other.free_slots())
+    other.set_free_value(s, 2 * other.value(s) + 1);
+  other.propagate();
+  const Domain_locator<K> locator(spline.domain());
+  std::mt19937_64 engine(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<K::Point_2> queries;
+  for (int i = 0; i < 40000; ++i)
+    queries.emplace_back(u(engine), u(engine));
+  CGAL::hilbert_sort(queries.begin(), queries.end());
+  auto via_patches = [&](const TS::C1_quintic_spline<K>& s) {
+    std::vector<Bezier_triangle<K>> patches;
+    for (Index f = 0; f < s.domain().number_of_faces(); ++f)
+      patches.push_back(s.patch(f));
+    return TS::evaluate_functional(TS::Patch_network<K>(s.domain(), patches), locator, queries);
+  };
+  auto same = [](const std::vector<double>& a, const std::vector<double>& b) {
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (!(a[i] == b[i] || (std::isnan(a[i]) && std::isnan(b[i]))))
+        return false;
+    return a.size() == b.size();
+  };
+  const std::vector<double> first = via_patches(spline), second = via_patches(other);
+  EXPECT_FALSE(same(first, second));
+  for (int round = 0; round < 2; ++round) {
+    EXPECT_TRUE(same(TS::evaluate_functional(spline, locator, queries), first));
+    EXPECT_TRUE(same(TS::evaluate_functional(other, locator, queries), second));
+  }
+  // one query at a time, on this thread: its face's net, kept from the call before, is the
+  // other spline's
+  for (std::size_t q = 0; q < queries.size(); q += 97) {
+    const std::vector<K::Point_2> one{queries[q]};
+    const double a = TS::evaluate_functional(spline, locator, one)[0];
+    const double b = TS::evaluate_functional(other, locator, one)[0];
+    EXPECT_TRUE(a == first[q] || (std::isnan(a) && std::isnan(first[q])));
+    EXPECT_TRUE(b == second[q] || (std::isnan(b) && std::isnan(second[q])));
+    const auto jet = TS::evaluate_jets(spline, locator, one, TS::Outside::NO_VALUE, 0)[0];
+    EXPECT_TRUE(jet ? jet->value == first[q] : std::isnan(first[q]));
+  }
+  // the jets' nets too
+  const auto jets = TS::evaluate_jets(other, locator, queries, TS::Outside::NO_VALUE, 0);
+  for (std::size_t q = 0; q < queries.size(); ++q)
+    EXPECT_TRUE(jets[q] ? jets[q]->value == second[q] : std::isnan(second[q]));
+  for (const auto s : spline.free_slots())
+    spline.set_free_value(s, other.value(s));
+  spline.propagate();
+  EXPECT_TRUE(same(TS::evaluate_functional(spline, locator, queries), second));
+}
+
+TEST(Evaluate, FixedDegreeDeCasteljauIsTheStepsBitForBit) {
+  std::mt19937_64 engine(13);
+  std::uniform_real_distribution<double> u(-3, 3), w(0, 1);
+  for (int trial = 0; trial < 2000; ++trial) {
+    TS::internal::Scratch_net<double> net;
+    for (int k = 0; k < 21; ++k)
+      net.push_back(u(engine));
+    std::array<double, 3> b{{w(engine), w(engine), 0}};
+    if (trial % 4 == 1)
+      b = {{1, 0, 0}};
+    if (trial % 4 == 2)
+      b[1] = 1 - b[0]; // on an edge
+    b[2] = 1 - b[0] - b[1];
+    const double value = TS::internal::de_casteljau_value<5>(net.data(), b);
+    for (int n = 5; n > 0; --n)
+      TS::internal::de_casteljau_step(net, n, b);
+    ASSERT_EQ(net.size(), 1u);
+    EXPECT_EQ(std::memcmp(&value, &net[0], sizeof value), 0) << trial;
+  }
 }
 
 TYPED_TEST(Output, QueriesOnHullEdgesUpToRoundingGetAValue) {

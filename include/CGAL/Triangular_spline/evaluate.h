@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -175,6 +176,7 @@ evaluate_jets(const TriangularSplineNetwork& network,
   const auto& domain = network.domain();
   auto patch = internal::patch_source(network);
   std::vector<std::optional<Point_jet<Value>>> jets(queries.size());
+  const std::uint64_t call = internal::new_evaluation_call();
   const auto jet_at = [&](const typename Domain_locator<GeomTraits>::Location& location,
                           int jet_order) {
     if constexpr (internal::Has_face_net<TriangularSplineNetwork,
@@ -182,7 +184,7 @@ evaluate_jets(const TriangularSplineNetwork& network,
       // the net straight from the network, over the face's vertex order (what its patch
       // would compute, without building the patch)
       internal::Scratch_net<Value> net;
-      network.face_net(location.face, net);
+      internal::face_net_of(network, location.face, call, net);
       const auto& t = domain.face(location.face);
       const auto [dx, dy] =
           internal::unit_directions(domain.point(t[0]), domain.point(t[1]), domain.point(t[2]));
