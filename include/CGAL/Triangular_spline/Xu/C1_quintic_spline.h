@@ -38,6 +38,14 @@
 
 namespace CGAL {
 namespace Triangular_spline {
+namespace internal {
+// Tests only: false leaves the dependency cycles that single faces close to order_rules()
+// and a new round of the plan, as for any other cycle (the plans must be the same).
+inline bool& break_face_cycles_first() {
+  static bool first = true;
+  return first;
+}
+} // namespace internal
 
 /*!
   \ingroup PkgTriangularSplineSplines
@@ -1612,12 +1620,222 @@ private:
     internal::release(v);
   }
 
+  // A link of step 2 of build_plan_once(): at a re-routed end r of edge `edge`, the corner
+  // diamond ties the corner-inner points of the two faces beside the edge.
+  struct Link {
+    Index edge;
+    std::size_t position;                // i: the link between star faces i-1 and i
+    std::size_t face_before, face_after; // positions in the star of r
+    FT mu_before, mu_after, mu_edge;     // star = mu_before CI_before + mu_edge EM + ...
+    bool with_edge_point;
+  };
+  // Step 2 of build_plan_once() at vertex r: the links of r's re-routed edges, in paths,
+  // each solved for one of its corner-inner points: solve(link, solve_before) in emission
+  // order. Returns the closing edge of a near-singular r (null_index for any other). Changes
+  // only routes that end at r, as the near-singular case asks; `path` is scratch space.
+  template <class Solve>
+  Index solve_links_at(Index r, std::vector<Edge_route>& routes,
+                       const std::vector<char>& allow_thin, std::vector<Link>& path,
+                       const Solve& solve) const {
+    const auto [fb, fe] = m_domain.star_faces(r);
+    const auto [eb, ee] = m_domain.star_edges(r);
+    const auto [nb, ne] = m_domain.neighbours(r);
+    const std::size_t k = static_cast<std::size_t>(fe - fb);
+    const bool boundary = m_domain.is_boundary_vertex(r);
+    auto linked = [&](std::size_t i) {
+      return !(boundary && (i == 0 || i == k)) && routes[eb[i % k]].end == r;
+    };
+    std::size_t links = 0;
+    for (std::size_t i = 0; i < k; ++i)
+      links += linked(i) ? 1 : 0;
+    if (links == 0)
+      return Domain::null_index;
+    Index closing = Domain::null_index; // the regular link of a near-singular vertex
+    if (!boundary && links == k) {
+      // A full cycle: implied only if every link is degenerate (a singular vertex).
+      std::size_t thinnest = k;
+      for (std::size_t i = 0; i < k; ++i) {
+        const Edge_route& route = routes[eb[i]];
+        if (route.kind == End_route::THIN &&
+            (thinnest == k || route.regular_weight < routes[eb[thinnest]].regular_weight))
+          thinnest = i;
+      }
+      if (thinnest != k) {
+        routes[eb[thinnest]] = Edge_route();
+        closing = eb[thinnest];
+        // The closing rule relies on an exact cancellation of terms of about 1/delta, so
+        // every other link at r must hold exactly too: an end degenerate only up to
+        // rounding (its edge-point term, about delta times a value, dropped) would have
+        // that term multiplied by 1/delta (measured: errors of 5e-3 on a grid jittered by
+        // 1e-14). Such an end is linked with its edge point, as a thin end, unless that
+        // closed a dependency cycle.
+        for (std::size_t i = 0; i < k; ++i) {
+          Edge_route& route = routes[eb[i]];
+          if (route.kind == End_route::DEGENERATE && !std::isinf(route.regular_weight) &&
+              allow_thin[eb[i]])
+            route.kind = End_route::THIN;
+        }
+      }
+    }
+    // Start after an unlinked position, so that paths are not cut in two.
+    std::size_t start = 0;
+    if (!boundary) {
+      while (start < k && linked(start))
+        ++start;
+      if (start == k)
+        start = 0; // singular vertex: link 0 is the implied one
+    }
+    auto make_link = [&](std::size_t i) {
+      const Index e = eb[i % k];
+      const Edge_route& route = routes[e];
+      const std::size_t before = (i + k - 1) % k, after = i % k;
+      const Point_2& p_before = m_domain.point(nb[(i + k - 1) % k]);
+      const Point_2& p_after = m_domain.point(nb[(i + 1) % (boundary ? k + 1 : k)]);
+      Link link{e, i % k, before, after, FT(0), FT(0), FT(0), false};
+      if (route.kind == End_route::DEGENERATE) {
+        // r = (1-t) p_before + t p_after (t by projection: exact when r is on the segment,
+        // the nearest point of the segment for a frame collinear up to rounding)
+        const Point_2& pr = m_domain.point(r);
+        const FT dx = p_after.x() - p_before.x(), dy = p_after.y() - p_before.y();
+        const FT t =
+            ((pr.x() - p_before.x()) * dx + (pr.y() - p_before.y()) * dy) / (dx * dx + dy * dy);
+        link.mu_before = FT(1) - t;
+        link.mu_after = t;
+      } else {
+        const auto& ef = m_domain.edge_faces(e);
+        const bool left_before = ef[0] == fb[before];
+        link.mu_before = left_before ? route.mu[0] : route.mu[2];
+        link.mu_after = left_before ? route.mu[2] : route.mu[0];
+        link.mu_edge = route.mu[1];
+        link.with_edge_point = true;
+      }
+      return link;
+    };
+    auto emit_path = [&]() {
+      if (path.empty())
+        return;
+      // Root position rho in 0..L: links j < rho are solved for their face before, the
+      // others for their face after.
+      const std::size_t L = path.size();
+      auto cost = [](const FT& solved, const FT& other, const FT& edge) {
+        const double d = std::abs(CGAL::to_double(solved));
+        if (CGAL::is_zero(solved))
+          return std::numeric_limits<double>::infinity();
+        return (std::max)(
+            {1 / d, std::abs(CGAL::to_double(other)) / d, std::abs(CGAL::to_double(edge)) / d});
+      };
+      std::size_t best_root = 0;
+      double best_cost = std::numeric_limits<double>::infinity();
+      for (std::size_t rho = 0; rho <= L; ++rho) {
+        double worst = 0;
+        for (std::size_t j = 0; j < L; ++j)
+          worst = (std::max)(worst,
+                             j < rho ? cost(path[j].mu_before, path[j].mu_after, path[j].mu_edge)
+                                     : cost(path[j].mu_after, path[j].mu_before, path[j].mu_edge));
+        if (worst < best_cost) {
+          best_cost = worst;
+          best_root = rho;
+        }
+      }
+      // Away from the root: backwards from rho - 1, forwards from rho.
+      for (std::size_t j = best_root; j-- > 0;)
+        solve(path[j], true);
+      for (std::size_t j = best_root; j < L; ++j)
+        solve(path[j], false);
+      path.clear();
+    };
+    for (std::size_t step = 1; step < k + (boundary ? 0 : 1); ++step) {
+      const std::size_t i = (start + step) % k; // the link between faces i-1 and i
+      const bool skip = !boundary && step == k; // back at start: not a link by choice
+      if (!skip && linked(i) && !(boundary && i == 0))
+        path.push_back(make_link(i));
+      else
+        emit_path();
+    }
+    emit_path();
+    return closing;
+  }
+
+  // The dependency cycles of step 2 that one face closes, broken before any rule is listed.
+  // When each edge of a face is re-routed at a different corner, the face's corner-inner
+  // point at such a corner r, if r's link solves for it, reads r's edge-middle point; that
+  // point reads (step 4) the edge-middle point at the other end s, which reads (step 3) the
+  // corner-inner points at s of both faces beside the edge, this face's among them: around
+  // the face, a cycle. order_rules() finds it only once every rule is listed, and the whole
+  // plan was then built again: random points had two or three such faces per 10^6 points,
+  // and every set of 10^6 measured took two rounds (a tenth of a c1 run). Here each such
+  // face's least thin edge (by regular_weight(), as order_rules() chooses) loses its
+  // re-routing, as in order_rules()' next round, until no face closes a cycle; order_rules()
+  // still finds any other cycle.
+  void break_face_cycles(std::vector<Edge_route>& routes, std::vector<char>& allow_thin) const {
+    if (!internal::break_face_cycles_first())
+      return;
+    const Index F = static_cast<Index>(m_domain.number_of_faces());
+    std::vector<Link> path;
+    std::vector<std::pair<Index, Edge_route>> saved;
+    std::vector<Index> least;
+    // Whether r's link of edge e solves for the corner-inner point of face f through r's
+    // edge-middle point (the routes that solve_links_at() changes at r are put back).
+    auto solves_through_edge_point = [&](Index r, Index e, Index f) {
+      const auto [fb, fe] = m_domain.star_faces(r);
+      const auto [eb, ee] = m_domain.star_edges(r);
+      saved.clear();
+      for (auto it = eb; it != ee; ++it)
+        saved.emplace_back(*it, routes[*it]);
+      bool found = false;
+      solve_links_at(r, routes, allow_thin, path, [&, fb = fb](const Link& link, bool before) {
+        if (link.edge == e)
+          found = link.with_edge_point && fb[before ? link.face_before : link.face_after] == f;
+      });
+      for (auto& [edge, route] : saved)
+        routes[edge] = std::move(route);
+      return found;
+    };
+    for (;;) {
+      least.clear();
+      for (Index f = 0; f < F; ++f) {
+        const auto& corners = m_domain.face(f);
+        std::array<Index, 3> edge; // the face's edge re-routed at corner i
+        bool cycle = true;
+        for (int i = 0; i < 3 && cycle; ++i) {
+          const Index e1 = m_domain.face_edge(f, (i + 1) % 3),
+                      e2 = m_domain.face_edge(f, (i + 2) % 3);
+          const Index r = corners[std::size_t(i)];
+          const bool at1 = routes[e1].end == r, at2 = routes[e2].end == r;
+          cycle = at1 != at2;
+          edge[std::size_t(i)] = at1 ? e1 : e2;
+        }
+        for (int i = 0; i < 3 && cycle; ++i)
+          cycle = solves_through_edge_point(corners[std::size_t(i)], edge[std::size_t(i)], f);
+        if (!cycle)
+          continue;
+        Index e = edge[0];
+        double w = regular_weight(e);
+        for (int i = 1; i < 3; ++i) {
+          const double wi = regular_weight(edge[std::size_t(i)]);
+          if (wi < w) {
+            w = wi;
+            e = edge[std::size_t(i)];
+          }
+        }
+        least.push_back(e);
+      }
+      if (least.empty())
+        return;
+      for (const Index e : least) {
+        allow_thin[e] = 0;
+        if (routes[e].kind == End_route::THIN)
+          routes[e] = Edge_route(); // what route_edges() gives without the re-routing
+      }
+    }
+  }
+
   // One round of the plan; `frames` the corner regions' frames (choose_frames()).
   // Plans that store their rules (exact ones) compute the rules' weights on all cores too,
   // corner regions by vertex, edge points by edge, before listing the rules in order: each
   // rule gets the very weights the serial listing computed.
   void build_plan_once(const std::vector<std::array<std::uint32_t, 3>>& frames,
-                       const std::vector<char>& allow_thin, std::vector<Index>& thin_edge_of_rule) {
+                       std::vector<char>& allow_thin, std::vector<Index>& thin_edge_of_rule) {
     const Index V = static_cast<Index>(m_domain.number_of_vertices());
     const Index E = static_cast<Index>(m_domain.number_of_edges());
     const Index F = static_cast<Index>(m_domain.number_of_faces());
@@ -1690,6 +1908,7 @@ private:
     Flip_choices flips;
     std::vector<Edge_route> routes = route_edges(allow_thin, parallel_plan ? nullptr : &middle,
                                                  &middle_largest, parallel_plan ? nullptr : &flips);
+    break_face_cycles(routes, allow_thin);
     m_frames.clear();
     m_near_singular.clear();
 
@@ -1703,156 +1922,36 @@ private:
     // A cycle closed by a thin link is not implied: its thinnest link goes back to the
     // regular rule.
     std::vector<char> inner_dependent(F * std::size_t(3), 0);
-    struct Link {
-      Index edge;
-      std::size_t position;                // i: the link between star faces i-1 and i
-      std::size_t face_before, face_after; // positions in the star of r
-      FT mu_before, mu_after, mu_edge;     // star = mu_before CI_before + mu_edge EM + ...
-      bool with_edge_point;
-    };
     std::vector<Link> path;
     std::vector<Emitted_link> emitted; // the links of r as solved, in emission order
     m_closing.clear();
     for (Index r = 0; r < V; ++r) {
       const auto [fb, fe] = m_domain.star_faces(r);
-      const auto [eb, ee] = m_domain.star_edges(r);
-      const auto [nb, ne] = m_domain.neighbours(r);
-      const std::size_t k = static_cast<std::size_t>(fe - fb);
-      const bool boundary = m_domain.is_boundary_vertex(r);
-      auto linked = [&](std::size_t i) {
-        return !(boundary && (i == 0 || i == k)) && routes[eb[i % k]].end == r;
-      };
-      std::size_t links = 0;
-      for (std::size_t i = 0; i < k; ++i)
-        links += linked(i) ? 1 : 0;
-      if (links == 0)
-        continue;
-      Index closing = Domain::null_index; // the regular link of a near-singular vertex
       emitted.clear();
-      if (!boundary && links == k) {
-        // A full cycle: implied only if every link is degenerate (a singular vertex).
-        std::size_t thinnest = k;
-        for (std::size_t i = 0; i < k; ++i) {
-          const Edge_route& route = routes[eb[i]];
-          if (route.kind == End_route::THIN &&
-              (thinnest == k || route.regular_weight < routes[eb[thinnest]].regular_weight))
-            thinnest = i;
-        }
-        if (thinnest != k) {
-          routes[eb[thinnest]] = Edge_route();
-          m_near_singular.push_back(r);
-          closing = eb[thinnest];
-          // The closing rule relies on an exact cancellation of terms of about 1/delta, so
-          // every other link at r must hold exactly too: an end degenerate only up to
-          // rounding (its edge-point term, about delta times a value, dropped) would have
-          // that term multiplied by 1/delta (measured: errors of 5e-3 on a grid jittered by
-          // 1e-14). Such an end is linked with its edge point, as a thin end, unless that
-          // closed a dependency cycle.
-          for (std::size_t i = 0; i < k; ++i) {
-            Edge_route& route = routes[eb[i]];
-            if (route.kind == End_route::DEGENERATE && !std::isinf(route.regular_weight) &&
-                allow_thin[eb[i]])
-              route.kind = End_route::THIN;
-          }
-        }
-      }
-      // Start after an unlinked position, so that paths are not cut in two.
-      std::size_t start = 0;
-      if (!boundary) {
-        while (start < k && linked(start))
-          ++start;
-        if (start == k)
-          start = 0; // singular vertex: link 0 is the implied one
-      }
-      auto make_link = [&](std::size_t i) {
-        const Index e = eb[i % k];
-        const Edge_route& route = routes[e];
-        const std::size_t before = (i + k - 1) % k, after = i % k;
-        const Point_2& p_before = m_domain.point(nb[(i + k - 1) % k]);
-        const Point_2& p_after = m_domain.point(nb[(i + 1) % (boundary ? k + 1 : k)]);
-        Link link{e, i % k, before, after, FT(0), FT(0), FT(0), false};
-        if (route.kind == End_route::DEGENERATE) {
-          // r = (1-t) p_before + t p_after (t by projection: exact when r is on the segment,
-          // the nearest point of the segment for a frame collinear up to rounding)
-          const Point_2& pr = m_domain.point(r);
-          const FT dx = p_after.x() - p_before.x(), dy = p_after.y() - p_before.y();
-          const FT t =
-              ((pr.x() - p_before.x()) * dx + (pr.y() - p_before.y()) * dy) / (dx * dx + dy * dy);
-          link.mu_before = FT(1) - t;
-          link.mu_after = t;
-        } else {
-          const auto& ef = m_domain.edge_faces(e);
-          const bool left_before = ef[0] == fb[before];
-          link.mu_before = left_before ? route.mu[0] : route.mu[2];
-          link.mu_after = left_before ? route.mu[2] : route.mu[0];
-          link.mu_edge = route.mu[1];
-          link.with_edge_point = true;
-        }
-        return link;
-      };
-      auto emit_path = [&]() {
-        if (path.empty())
-          return;
-        // Root position rho in 0..L: links j < rho are solved for their face before, the
-        // others for their face after.
-        const std::size_t L = path.size();
-        auto cost = [](const FT& solved, const FT& other, const FT& edge) {
-          const double d = std::abs(CGAL::to_double(solved));
-          if (CGAL::is_zero(solved))
-            return std::numeric_limits<double>::infinity();
-          return (std::max)(
-              {1 / d, std::abs(CGAL::to_double(other)) / d, std::abs(CGAL::to_double(edge)) / d});
-        };
-        std::size_t best_root = 0;
-        double best_cost = std::numeric_limits<double>::infinity();
-        for (std::size_t rho = 0; rho <= L; ++rho) {
-          double worst = 0;
-          for (std::size_t j = 0; j < L; ++j)
-            worst = (std::max)(
-                worst, j < rho ? cost(path[j].mu_before, path[j].mu_after, path[j].mu_edge)
-                               : cost(path[j].mu_after, path[j].mu_before, path[j].mu_edge));
-          if (worst < best_cost) {
-            best_cost = worst;
-            best_root = rho;
-          }
-        }
-        auto emit = [&](const Link& link, bool solve_before) {
-          const std::size_t solved = solve_before ? link.face_before : link.face_after;
-          const std::size_t other = solve_before ? link.face_after : link.face_before;
-          const FT& mu_solved = solve_before ? link.mu_before : link.mu_after;
-          const FT& mu_other = solve_before ? link.mu_after : link.mu_before;
-          const Slot star = star_slot(link.edge, r);
-          const Slot ci_other = corner_inner_slot(fb[other], r);
-          if (link.with_edge_point)
-            add_rule(corner_inner_slot(fb[solved], r),
-                     {{star, ci_other, edge_middle_slot(link.edge, r)}},
-                     {{FT(1) / mu_solved, -mu_other / mu_solved, -link.mu_edge / mu_solved}});
-          else
-            add_rule(corner_inner_slot(fb[solved], r), {{star, ci_other, null_slot}},
-                     {{FT(1) / mu_solved, -mu_other / mu_solved, FT(0)}});
-          thin_edge_of_rule.push_back(link.with_edge_point ? link.edge : Domain::null_index);
-          inner_dependent[3 * std::size_t(fb[solved]) +
-                          std::size_t(position_in_face(fb[solved], r))] = 1;
-          emitted.push_back({link.position, solve_before});
-        };
-        // Away from the root: backwards from rho - 1, forwards from rho.
-        for (std::size_t j = best_root; j-- > 0;)
-          emit(path[j], true);
-        for (std::size_t j = best_root; j < L; ++j)
-          emit(path[j], false);
-        path.clear();
-      };
-      for (std::size_t step = 1; step < k + (boundary ? 0 : 1); ++step) {
-        const std::size_t i = (start + step) % k; // the link between faces i-1 and i
-        const bool skip = !boundary && step == k; // back at start: not a link by choice
-        if (!skip && linked(i) && !(boundary && i == 0))
-          path.push_back(make_link(i));
+      auto emit = [&, fb = fb](const Link& link, bool solve_before) {
+        const std::size_t solved = solve_before ? link.face_before : link.face_after;
+        const std::size_t other = solve_before ? link.face_after : link.face_before;
+        const FT& mu_solved = solve_before ? link.mu_before : link.mu_after;
+        const FT& mu_other = solve_before ? link.mu_after : link.mu_before;
+        const Slot star = star_slot(link.edge, r);
+        const Slot ci_other = corner_inner_slot(fb[other], r);
+        if (link.with_edge_point)
+          add_rule(corner_inner_slot(fb[solved], r),
+                   {{star, ci_other, edge_middle_slot(link.edge, r)}},
+                   {{FT(1) / mu_solved, -mu_other / mu_solved, -link.mu_edge / mu_solved}});
         else
-          emit_path();
-      }
-      emit_path();
-      if (closing != Domain::null_index)
+          add_rule(corner_inner_slot(fb[solved], r), {{star, ci_other, null_slot}},
+                   {{FT(1) / mu_solved, -mu_other / mu_solved, FT(0)}});
+        thin_edge_of_rule.push_back(link.with_edge_point ? link.edge : Domain::null_index);
+        inner_dependent[3 * std::size_t(fb[solved]) +
+                        std::size_t(position_in_face(fb[solved], r))] = 1;
+        emitted.push_back({link.position, solve_before});
+      };
+      const Index closing = solve_links_at(r, routes, allow_thin, path, emit);
+      if (closing != Domain::null_index) {
+        m_near_singular.push_back(r);
         m_closing.push_back({closing, r, closing_combination(r, closing, emitted, routes)});
+      }
     }
     for (Index f = 0; f < F; ++f)
       for (int i = 0; i < 3; ++i)
