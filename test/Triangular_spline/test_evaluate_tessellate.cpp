@@ -525,7 +525,7 @@ struct Face_cycles_left_to_the_ordering {
 
 // A face whose three edges are re-routed at three different corners, each corner's link
 // solving for the face's own corner-inner point, closes a dependency cycle: every cycle of
-// five sets of 10^6 random points (two or three each) was one. The plan breaks them before
+// four sets of 10^6 random points (two or three each) was one. The plan breaks them before
 // listing any rule, in one round, with the plan that order_rules() and a second round give:
 // the same rules (targets, sources, weights) in the same order and the same free slots. The
 // two neighbourhoods are two rings around such faces of 10^6 random points.

@@ -9,6 +9,7 @@
 #include "test_support.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/hilbert_sort.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangular_spline/internal/face_measures.h>
 #include <CGAL/Triangular_spline/internal/frame_degeneracy.h>
@@ -27,6 +28,7 @@
 #include <CGAL/Triangular_spline/Domain/domain_from_triangulation_2.h>
 #include <CGAL/Triangular_spline/internal/avx2_clones.h>
 #include <CGAL/Triangular_spline/internal/filtered_orientation.h>
+#include <CGAL/Triangular_spline/internal/hilbert_order.h>
 #include <CGAL/Triangular_spline/internal/parallel.h>
 #include <CGAL/Triangular_spline/internal/parallel_vector.h>
 #include <CGAL/Triangular_spline/internal/scattered_data_checks.h>
@@ -2625,6 +2627,36 @@ void expect_the_domain_of_cgals_triangulation(const TS::Scattered_data<K>& data)
     ASSERT_EQ(domain.edge(e), reference.edge(e));
     ASSERT_EQ(domain.edge_faces(e), reference.edge_faces(e));
   }
+}
+
+// The Hilbert permutation that numbers a domain's vertices sorts its first level on all
+// cores (internal::hilbert_sort_on_cores()): CGAL's sequential median sort must give the same
+// order, for double points (a tenth of them sharing an x with another, so that the ties are
+// broken by y) and for exact ones, from above the size at which the sort goes parallel.
+TEST(DelaunayDomain, HilbertPermutationOnAllCoresIsCGALsSequentialSort) {
+  auto check = [](auto kernel, std::size_t n) {
+    using K = decltype(kernel);
+    std::mt19937 random(41);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    std::vector<typename K::Point_2> points;
+    for (std::size_t i = 0; i < n; ++i)
+      points.emplace_back(uniform(random), uniform(random));
+    for (std::size_t i = 0; i < n / 10; ++i)
+      points.emplace_back(points[i].x(), uniform(random));
+    const std::vector<std::uint32_t> order = TS::internal::hilbert_permutation<K>(points);
+    // CGAL's sort of the same indices with the same comparisons, on one thread
+    std::vector<TS::internal::Coordinate_intervals> intervals;
+    for (const auto& p : points)
+      intervals.push_back(TS::internal::coordinate_intervals(p));
+    std::vector<std::uint32_t> expected(points.size());
+    std::iota(expected.begin(), expected.end(), 0u);
+    CGAL::hilbert_sort(expected.begin(), expected.end(),
+                       TS::internal::Indexed_hilbert_traits<K>{&points, &intervals},
+                       CGAL::Hilbert_sort_median_policy());
+    EXPECT_TRUE(order == expected);
+  };
+  check(Epick(), 100000);
+  check(Exact_kernel(), 40000);
 }
 
 TEST(DelaunayDomain, HilbertInsertionGivesTheDomainOfCGALsTriangulation) {

@@ -1763,7 +1763,7 @@ private:
   // corner-inner points at s of both faces beside the edge, this face's among them: around
   // the face, a cycle. order_rules() finds it only once every rule is listed, and the whole
   // plan was then built again: random points had two or three such faces per 10^6 points,
-  // and every set of 10^6 measured took two rounds (a tenth of a c1 run). Here each such
+  // and most sets of 10^6 measured took two rounds (a tenth of a c1 run). Here each such
   // face's least thin edge (by regular_weight(), as order_rules() chooses) loses its
   // re-routing, as in order_rules()' next round, until no face closes a cycle; order_rules()
   // still finds any other cycle.
