@@ -489,7 +489,7 @@ TEST(Plan, OnAllCoresIsTheOneThreadPlan) {
 // are chosen once for all rounds, and the ordering's first pass runs in runs of one kind on
 // all cores: the plan must still be a propagation order, count every rule's weight once, and
 // be the one-thread plan. (About one set of 2 10^5 random points in six needed two rounds,
-// every set of 10^6 points did; their cycles were all single faces', which the plan now
+// most sets of 10^6 points did; their cycles were all single faces', which the plan now
 // breaks before listing, so this test leaves those to the ordering.)
 // An exact plan stores every rule; from 20000 rules propagation_amplification() runs them
 // depth by depth on all cores, and gives the one-thread estimate (plan order) bit for bit.
