@@ -1382,6 +1382,38 @@ TEST(Domain, ChecksOnAllCoresReportTheFirstBadFaceAndFan) {
 // the rules in order: the plan must be the one-thread plan, rule for rule, on a grid whose
 // frames are exactly degenerate (exact re-routing, singular vertices), nearly so (points
 // moved by 1e-9: thin re-routing) or regular.
+TEST(Plan, WorkBesideThePlanRunsUntilThePlanIsDone) {
+  // The constructor make_c1_quintic_spline() uses: meanwhile(domain, planned) runs on another
+  // thread while the plan is built, reads the spline's own domain, and is told when the plan
+  // is done (here it waits for that); the plan is the one built without it.
+  auto check = [](const auto& domain) {
+    using K = typename std::decay_t<decltype(domain)>::Geom_traits;
+    const Planar_domain<K>* seen = nullptr;
+    std::thread::id beside;
+    bool told = false;
+    const C1_quintic_spline<K> spline(
+        domain, Corner_frame::CORNER_AND_TWO_STARS,
+        TS::internal::while_planning(
+            [&](const Planar_domain<K>& d, const std::atomic<bool>& planned) {
+              seen = &d;
+              beside = std::this_thread::get_id();
+              while (!planned.load())
+                std::this_thread::yield();
+              told = true;
+            }));
+    EXPECT_TRUE(told);
+    EXPECT_EQ(seen, &spline.domain());
+    EXPECT_NE(beside, std::this_thread::get_id());
+    const C1_quintic_spline<K> alone(domain, Corner_frame::CORNER_AND_TWO_STARS);
+    EXPECT_EQ(spline.free_slots(), alone.free_slots());
+    EXPECT_EQ(spline.number_of_free_parameters(), alone.number_of_free_parameters());
+    EXPECT_EQ(spline.max_propagation_weight(), alone.max_propagation_weight());
+    EXPECT_EQ(spline.propagation_amplification(), alone.propagation_amplification());
+  };
+  check(random_delaunay<Epick>(3000, 4));
+  check(random_delaunay<Exact_kernel>(60, 4));
+}
+
 TEST(Plan, ExactPlanOnAllCoresIsTheOneThreadPlan) {
   using K = Exact_kernel;
   using FT = K::FT;
@@ -2090,6 +2122,8 @@ TEST(LocalFit, OnDemandFitsAreTheFitsOfAllVertices) {
   // ON_DEMAND keeps only the vertices of the last fit(): theirs are the polynomials that
   // fitting every vertex gives, bit for bit in double and equal in exact rationals
   // (fraction-free: a vertex's denominators must not be left from the one kept before it).
+  // So does fit_first() (vertices 0, 1, ... until stopped; make_c1_quintic_spline() fits
+  // them while the plan is built), which keeps what it fitted and leaves fit() as it was.
   auto check = [](const auto& domain, const auto& z, int degree) {
     using K = typename std::decay_t<decltype(domain)>::Geom_traits;
     const TS::Local_polynomials<K> all(domain, z, degree);
@@ -2125,6 +2159,26 @@ TEST(LocalFit, OnDemandFitsAreTheFitsOfAllVertices) {
         EXPECT_EQ(some.value(v, domain.point(w)), all.value(v, domain.point(w)));
       }
     }
+    std::atomic<bool> stop{false};
+    ASSERT_EQ(some.fit_first(V / 3, stop), std::size_t(V / 3));
+    for (Index v = 0; v < V; ++v) {
+      ASSERT_EQ(some.is_kept(v), v < V / 3) << v;
+      if (v >= V / 3)
+        continue;
+      EXPECT_EQ(some.degree(v), all.degree(v));
+      EXPECT_EQ(some.resolution(v), all.resolution(v));
+      EXPECT_EQ(some.gradient(v), all.gradient(v));
+      const auto [nb, ne] = domain.neighbours(v);
+      EXPECT_EQ(some.value(v, domain.point(*nb)), all.value(v, domain.point(*nb)));
+    }
+    EXPECT_EQ(some.fit_first(10 * std::size_t(V), stop), std::size_t(V)); // at most all
+    stop = true;
+    EXPECT_EQ(some.fit_first(V, stop), 0u); // stopped before the first vertex
+    for (Index v = 0; v < V; ++v)
+      ASSERT_FALSE(some.is_kept(v)) << v;
+    some.fit({V - 1, 0});
+    EXPECT_EQ(some.value(V - 1, domain.point(0)), all.value(V - 1, domain.point(0)));
+    EXPECT_EQ(some.value(0, domain.point(V - 1)), all.value(0, domain.point(V - 1)));
   };
   const auto domain = random_delaunay<Epick>(300, 12);
   std::vector<double> z;
@@ -2136,9 +2190,11 @@ TEST(LocalFit, OnDemandFitsAreTheFitsOfAllVertices) {
   for (const auto& p : exact.points())
     q.push_back(p.x() * p.x() * p.y() / (1 + p.y() * p.y()) + p.x());
   check(exact, q, 3);
-  // fit() only with ON_DEMAND, each vertex of the domain once
+  // fit() and fit_first() only with ON_DEMAND, each vertex of the domain once
   TS::Local_polynomials<Epick> all(domain, z, 5);
   EXPECT_TRUE(throws_with([&] { all.fit({0}); }, "ON_DEMAND"));
+  std::atomic<bool> stop{false};
+  EXPECT_TRUE(throws_with([&] { all.fit_first(3, stop); }, "ON_DEMAND"));
   TS::Local_polynomials<Epick> some(domain, z, 5, TS::Degree_selection::CROSS_VALIDATION, 0,
                                     TS::Exact_elimination::FRACTION_FREE,
                                     TS::Local_polynomial_storage::ON_DEMAND);
@@ -2205,7 +2261,47 @@ TEST(LocalFit, StreamedFitsGiveEveryFreeSlotItsTargetWhateverTheBlocks) {
       }
       for (std::size_t block : {97u, 1u})
         EXPECT_EQ(fitted(*z, fit, block).first.values(), one.values()) << block;
+      // the first vertices fitted ahead (make_c1_quintic_spline() does, while the plan is
+      // built): none, one, fewer than a block, more, all of them
+      for (std::size_t ahead : {std::size_t(0), std::size_t(1), std::size_t(60), std::size_t(500),
+                                domain.number_of_vertices()}) {
+        std::atomic<bool> go_on{false};
+        TS::internal::Prefitted_polynomials<Epick, double> prefit;
+        TS::internal::prefit_local_polynomials(
+            domain, *z, fit, 5, TS::Degree_selection::CROSS_VALIDATION, ahead, go_on, prefit);
+        ASSERT_EQ(prefit.vertices, ahead);
+        Spline spline(domain, Corner_frame::CORNER_AND_TWO_STARS);
+        TS::internal::Schwarz_options options;
+        options.local_block = 97;
+        TS::internal::fit_vertex_data(spline, *z, fit, 5, TS::Degree_selection::CROSS_VALIDATION, 0,
+                                      {}, options, nullptr, std::nullopt, &prefit);
+        EXPECT_EQ(spline.values(), one.values()) << ahead;
+        EXPECT_FALSE(prefit.local) << "taken over";
+      }
     }
+  // Nothing ahead for the fits that hold every polynomial at once, nor for input the fit
+  // rejects (it reports that itself).
+  std::atomic<bool> go_on{false};
+  for (Fit fit : {Fit::LEAST_SQUARES, Fit::MINIMAL_ENERGY, Fit::TANGENT_PLANES}) {
+    TS::internal::Prefitted_polynomials<Epick, double> prefit;
+    TS::internal::prefit_local_polynomials(
+        domain, smooth, fit, 5, TS::Degree_selection::CROSS_VALIDATION, 100, go_on, prefit);
+    EXPECT_FALSE(prefit.local);
+  }
+  std::vector<double> short_values(smooth.begin(), smooth.end() - 1), nan_values = smooth;
+  nan_values[7] = std::numeric_limits<double>::quiet_NaN();
+  for (const auto* z : {&short_values, &nan_values}) {
+    TS::internal::Prefitted_polynomials<Epick, double> prefit;
+    TS::internal::prefit_local_polynomials(
+        domain, *z, Fit::ADAPTIVE, 5, TS::Degree_selection::CROSS_VALIDATION, 100, go_on, prefit);
+    EXPECT_FALSE(prefit.local);
+    EXPECT_EQ(prefit.vertices, 0u);
+  }
+  TS::internal::Prefitted_polynomials<Epick, double> bad_degree;
+  TS::internal::prefit_local_polynomials(domain, smooth, Fit::ADAPTIVE, 7,
+                                         TS::Degree_selection::CROSS_VALIDATION, 100, go_on,
+                                         bad_degree); // the constructor throws: caught
+  EXPECT_FALSE(bad_degree.local);
 }
 
 TEST(LocalFit, ConvergesWithOrderAboveThreeAndAHalf) {

@@ -24,6 +24,7 @@
 #include <boost/container/static_vector.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <iterator>
 #include <array>
 #include <cmath>
@@ -32,6 +33,8 @@
 #include <type_traits>
 #include <limits>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <utility>
 #include <random>
 #include <vector>
@@ -44,6 +47,15 @@ namespace internal {
 inline bool& break_face_cycles_first() {
   static bool first = true;
   return first;
+}
+// Work for the C1_quintic_spline constructor to do beside its plan (its f(domain)).
+template <class F>
+struct While_planning {
+  F f;
+};
+template <class F>
+While_planning<F> while_planning(F f) {
+  return {std::move(f)};
 }
 } // namespace internal
 
@@ -192,15 +204,40 @@ public:
   */
   explicit C1_quintic_spline(Domain domain, Corner_frame frame = Corner_frame::SYMMETRIC_STARS)
       : m_domain(std::move(domain)), m_frame(frame) {
-    const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges(),
-                      F = m_domain.number_of_faces();
-    // A rule is kept as one 32-bit reference whose top bit tells stored from implicit.
-    if (V + 4 * E + 6 * F >= explicit_rule_bit)
-      throw Invalid_input("spline: domain too large: more than 2^31 control points (about "
-                          "1.7e8 vertices)");
-    m_control_slots = V + 4 * E + 6 * F;
+    count_control_slots();
     build_plan();
   }
+  /// \cond SKIP_IN_MANUAL
+  // As above, calling meanwhile(domain(), planned) on another thread while the plan is built
+  // (which reads the domain only); `planned` is set once the plan is done, and the work
+  // should then stop soon. make_c1_quintic_spline() fits local polynomials there, on the
+  // core that the plan's serial stretches leave idle. `meanwhile` must not throw. If no
+  // thread can be started it is not called.
+  template <class Meanwhile>
+  C1_quintic_spline(Domain domain, Corner_frame frame,
+                    internal::While_planning<Meanwhile> meanwhile)
+      : m_domain(std::move(domain)), m_frame(frame) {
+    count_control_slots();
+    std::atomic<bool> planned{false};
+    std::thread worker;
+    try {
+      worker = std::thread([&] { meanwhile.f(std::as_const(m_domain), std::as_const(planned)); });
+    } catch (const std::system_error&) {
+    }
+    auto stop = [&] {
+      planned.store(true, std::memory_order_relaxed);
+      if (worker.joinable())
+        worker.join();
+    };
+    try {
+      build_plan();
+    } catch (...) {
+      stop(); // it reads the domain, which unwinding destroys
+      throw;
+    }
+    stop();
+  }
+  /// \endcond
   /// @}
 
   /// \name Slots
@@ -1510,6 +1547,16 @@ private:
           routes[e] = route;
         });
     return routes;
+  }
+
+  void count_control_slots() {
+    const std::size_t V = m_domain.number_of_vertices(), E = m_domain.number_of_edges(),
+                      F = m_domain.number_of_faces();
+    // A rule is kept as one 32-bit reference whose top bit tells stored from implicit.
+    if (V + 4 * E + 6 * F >= explicit_rule_bit)
+      throw Invalid_input("spline: domain too large: more than 2^31 control points (about "
+                          "1.7e8 vertices)");
+    m_control_slots = V + 4 * E + 6 * F;
   }
 
   void build_plan() {

@@ -15,6 +15,7 @@
 #include <boost/container/static_vector.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -213,16 +214,50 @@ public:
     fit_list(m_kept.size(), [&](std::size_t i) { return m_kept[i]; });
   }
 
+  /// \cond SKIP_IN_MANUAL
+  // fit() of vertices 0, 1, 2, ... below `count`, on the calling thread alone, until `stop`
+  // is set (make_c1_quintic_spline() fits them while the plan is built, until it is);
+  // returns how many were fitted and are kept.
+  std::size_t fit_first(std::size_t count, const std::atomic<bool>& stop) {
+    if (!m_on_demand)
+      throw Invalid_input("local fit: fit() needs Local_polynomial_storage::ON_DEMAND");
+    for (Index v : m_kept)
+      m_stored_at[v] = not_kept;
+    m_kept.clear();
+    count = (std::min)(count, m_stored_at.size());
+    allocate(count);
+    for (std::size_t i = 0; i < count; ++i)
+      m_stored_at[i] = static_cast<std::uint32_t>(i);
+    std::size_t fitted = 0;
+#if CGAL_TRIANGULAR_SPLINE_AVX2_CLONES
+    if (internal::use_avx2_clones())
+      fitted = fit_first_avx2(count, stop);
+    else
+#endif
+      fitted = fit_first_share<false>(count, stop);
+    for (std::size_t i = fitted; i < count; ++i)
+      m_stored_at[i] = not_kept;
+    m_kept.resize(fitted);
+    for (std::size_t i = 0; i < fitted; ++i)
+      m_kept[i] = static_cast<Index>(i);
+    return fitted;
+  }
+  /// \endcond
+
   /// returns whether the coefficients of \f$p_v\f$ are kept (`value()`, `polar_value()` and
   /// `gradient()` need them): always with `ALL_VERTICES`, after `fit()` with `ON_DEMAND`.
   /// \param v the index of a vertex
   /// \returns whether the coefficients of \f$p_v\f$ are kept
-  bool is_kept(Index v) const { return !m_on_demand || m_stored_at[v] != not_kept; }
+  bool is_kept(Index v) const {
+    return !m_on_demand || m_stored_at[v] != not_kept;
+  }
 
   /// returns the degree \f$d_v\f$ chosen at vertex `v`.
   /// \param v the index of a vertex
   /// \returns the degree \f$d_v\f$ chosen at vertex `v`
-  int degree(Index v) const { return m_degree[v]; }
+  int degree(Index v) const {
+    return m_degree[v];
+  }
   /*!
     returns how well the data around `v` are resolved: the root of the ratio of the
     leave-one-out mean square residual of \f$p_v\f$ to that of the best plane through
@@ -235,7 +270,9 @@ public:
     \param v the index of a vertex
     \returns the resolution ratio, in [0, 1]
   */
-  double resolution(Index v) const { return m_resolution[v]; }
+  double resolution(Index v) const {
+    return m_resolution[v];
+  }
   /*!
     returns the radius of \f$p_v\f$'s fit: the largest distance from \f$v\f$ of the data
     points it was fitted to (0 for a constant). Far beyond it \f$p_v\f$ extrapolates: its
@@ -243,10 +280,14 @@ public:
     \param v the index of a vertex
     \returns the radius of the fit at `v`
   */
-  double radius(Index v) const { return double(m_radius[v]); }
+  double radius(Index v) const {
+    return double(m_radius[v]);
+  }
   /// returns the largest degree asked for.
   /// \returns the largest degree asked for
-  int max_degree() const { return m_max_degree; }
+  int max_degree() const {
+    return m_max_degree;
+  }
 
   /// returns \f$p_v(x)\f$.
   /// \param v the index of a vertex
@@ -344,9 +385,14 @@ private:
   // Zeroed coefficient storage for n vertices (a fraction-free vertex is recognised by its
   // non-zero denominator, so none may be left from the vertices kept before).
   void allocate(std::size_t n) {
+    // (a fit_first() of many vertices must not leave its storage to every later block)
+    if (m_coefficients.capacity() > 2 * n * coefficients_per_vertex + 4096)
+      std::vector<Value>().swap(m_coefficients);
     m_coefficients.assign(n * coefficients_per_vertex, Value_traits<Value>::zero());
     if constexpr (fraction_free) {
       if (m_fraction_free) {
+        if (m_numerators.capacity() > 2 * n * coefficients_per_vertex * D + 4096)
+          std::vector<Integer>().swap(m_numerators);
         m_numerators.assign(n * coefficients_per_vertex * D, Integer(0));
         m_denominators.assign(n * D, Integer(0));
       }
@@ -394,11 +440,29 @@ private:
   void fit_every(std::size_t first, std::size_t step, std::size_t n, const Vertex_at& vertex_at) {
     fit_share<false>(first, step, n, vertex_at);
   }
+  // fit_first(): vertices 0, 1, ... below n until `stop` (read every 64 vertices, about half
+  // a millisecond); returns how many.
+  template <bool Wide>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE std::size_t fit_first_share(std::size_t n,
+                                                                   const std::atomic<bool>& stop) {
+    Workspace work;
+    std::size_t i = 0;
+    for (; i < n; ++i) {
+      if (i % 64 == 0 && stop.load(std::memory_order_relaxed))
+        break;
+      fit_vertex<Wide>(static_cast<Index>(i), *m_data, work);
+    }
+    return i;
+  }
 #if CGAL_TRIANGULAR_SPLINE_AVX2_CLONES
   template <class Vertex_at>
   CGAL_TRIANGULAR_SPLINE_AVX2_TARGET void
   fit_every_avx2(std::size_t first, std::size_t step, std::size_t n, const Vertex_at& vertex_at) {
     fit_share<true>(first, step, n, vertex_at);
+  }
+  CGAL_TRIANGULAR_SPLINE_AVX2_TARGET std::size_t fit_first_avx2(std::size_t n,
+                                                                const std::atomic<bool>& stop) {
+    return fit_first_share<true>(n, stop);
   }
 #endif
   static constexpr int D = Value_traits<Value>::dimension;

@@ -12,6 +12,7 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <array>
+#include <atomic>
 #include <functional>
 #include <type_traits>
 #include <utility>
@@ -90,7 +91,10 @@ fit_statistics(Fit_statistics& statistics, const Named_function_parameters<T, Ta
   (`Corner_frame::SYMMETRIC_STARS`, Xu's scheme), every other fit interpolates them
   (`Corner_frame::CORNER_AND_TWO_STARS`). The free control points are then set by
   `fit_vertex_data()` and propagated. With an exact number type the result is exactly
-  \f$C^1\f$ (`certify_continuity(spline, 1)` proves it).
+  \f$C^1\f$ (`certify_continuity(spline, 1)` proves it). The result is that of building the
+  spline and calling `fit_vertex_data()`, bit for bit; for the local and adaptive fits one
+  more thread fits the first local polynomials while the plan is built, on the time its
+  serial stretches leave (`values` must not change during the call).
 
   \tparam GeomTraits a model of `Kernel`
   \tparam Value `GeomTraits::FT` (heights) or `GeomTraits::Vector_3` (parametric data)
@@ -163,14 +167,23 @@ make_c1_quintic_spline(Planar_domain<GeomTraits> domain, const std::vector<Value
                                 CGAL::internal_np::Param_not_found>)
     tension = given_tension;
 
+  // The local polynomials that the fit reads first are fitted while the plan is built.
+  internal::Prefitted_polynomials<GeomTraits, Value> prefit;
   C1_quintic_spline<GeomTraits, Value> spline(
       std::move(domain),
-      fit == Fit::APPROXIMATE ? Corner_frame::SYMMETRIC_STARS : Corner_frame::CORNER_AND_TWO_STARS);
+      fit == Fit::APPROXIMATE ? Corner_frame::SYMMETRIC_STARS : Corner_frame::CORNER_AND_TWO_STARS,
+      internal::while_planning(
+          [&](const Planar_domain<GeomTraits>& d, const std::atomic<bool>& planned) {
+            internal::prefit_local_polynomials(d, values, fit, degree, selection,
+                                               internal::prefit_vertices(d.number_of_vertices()),
+                                               planned, prefit);
+          }));
   const auto gradients = get_parameter(np, internal_np::vertex_gradients);
   const auto statistics = get_parameter(np, internal_np::fit_statistics);
   const auto run = [&](const std::vector<std::array<Value, 2>>& given) {
     const Fit_statistics s =
-        fit_vertex_data(spline, values, fit, degree, selection, lambda, given, tension);
+        internal::fit_vertex_data(spline, values, fit, degree, selection, lambda, given,
+                                  internal::Schwarz_options(), nullptr, tension, &prefit);
     if constexpr (!std::is_same_v<std::decay_t<decltype(statistics)>,
                                   CGAL::internal_np::Param_not_found>)
       statistics.get() = s;

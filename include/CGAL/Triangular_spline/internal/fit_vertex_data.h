@@ -24,12 +24,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -117,14 +119,63 @@ inline double local_polynomial_miss(double miss) {
 // coefficients each: 11 MB in double), not all of them (168 MB at 10^6 vertices).
 constexpr std::size_t local_polynomial_block = 65536;
 
-// fit_vertex_data() with the solver's options, and what the solver did (tests, benchmarks).
+// Local polynomials fitted before fit_vertex_data() runs, for it to take over:
+// make_c1_quintic_spline() fits them on one thread while the plan is built
+// (C1_quintic_spline's While_planning), whose serial stretches leave a core idle (about 1.4
+// core-seconds of the 3 s plan of 10^6 random points), until the plan is done. Only the
+// streamed fits (LOCAL_POLYNOMIAL, ADAPTIVE) take them: vertices [0, vertices), kept
+// (Local_polynomial_storage::ON_DEMAND). A vertex's polynomial does not depend on which
+// others are fitted with it, so the fit is the same bit for bit.
+template <class GeomTraits, class Value>
+struct Prefitted_polynomials {
+  std::optional<Local_polynomials<GeomTraits, Value>> local;
+  std::size_t vertices = 0;
+};
+
+// The most vertices fitted ahead: a quarter of them (their coefficients, 21 values per
+// vertex, are kept until the fit reads them: 42 MB at 10^6 points), at least a block.
+inline std::size_t prefit_vertices(std::size_t V) {
+  return (std::min)(V, (std::max)(local_polynomial_block, V / 4));
+}
+
+// Fits into `prefit` the first vertices that fit_vertex_data(spline, values, fit, degree,
+// selection, ...) on a spline over `domain` fits, at most `count`, until `stop` is set; or
+// nothing: for the other fits, and for input that fit_vertex_data() rejects (it reports
+// that itself). Never throws: on any failure nothing is kept, and the fit does the work.
+template <class GeomTraits, class Value>
+void prefit_local_polynomials(const Planar_domain<GeomTraits>& domain,
+                              const std::vector<Value>& values, Fit fit, int degree,
+                              Degree_selection selection, std::size_t count,
+                              const std::atomic<bool>& stop,
+                              Prefitted_polynomials<GeomTraits, Value>& prefit) noexcept {
+  try {
+    if ((fit != Fit::LOCAL_POLYNOMIAL && fit != Fit::ADAPTIVE) ||
+        values.size() != domain.number_of_vertices() ||
+        !std::all_of(values.begin(), values.end(),
+                     [](const Value& v) { return is_finite_value(v); }))
+      return;
+    prefit.local.emplace(domain, values, degree, selection, 0, Exact_elimination::FRACTION_FREE,
+                         Local_polynomial_storage::ON_DEMAND);
+    prefit.vertices = prefit.local->fit_first(count, stop);
+    if (prefit.vertices == 0)
+      prefit.local.reset(); // (stopped at once: nothing to take over)
+  } catch (...) {
+    prefit.local.reset();
+    prefit.vertices = 0;
+  }
+}
+
+// fit_vertex_data() with the solver's options, and what the solver did (tests, benchmarks);
+// `prefit`, if given, holds local polynomials prefit_local_polynomials() fitted for this
+// call's arguments (taken over).
 template <class GeomTraits, class Value>
 Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
                                const std::vector<Value>& values, Fit fit, int local_degree,
                                Degree_selection selection, double smoothing,
                                const std::vector<std::array<Value, 2>>& given_gradients,
                                const Schwarz_options& options, Schwarz_statistics* solver = nullptr,
-                               std::optional<double> tension = std::nullopt) {
+                               std::optional<double> tension = std::nullopt,
+                               Prefitted_polynomials<GeomTraits, Value>* prefit = nullptr) {
   using FT = typename GeomTraits::FT;
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   const auto& domain = spline.domain();
@@ -188,7 +239,12 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
   // from the local polynomials' values: the first sweep's windows see them beyond their
   // margins.
   const bool streamed = fit == Fit::LOCAL_POLYNOMIAL || fit == Fit::ADAPTIVE;
-  if (streamed)
+  std::size_t prefitted = 0; // vertices [0, prefitted) fitted and kept already
+  if (streamed && prefit && prefit->local && prefit->vertices > 0) {
+    local = std::move(prefit->local);
+    prefitted = prefit->vertices;
+    prefit->local.reset();
+  } else if (streamed)
     local.emplace(domain, values, local_degree, selection, 0, Exact_elimination::FRACTION_FREE,
                   Local_polynomial_storage::ON_DEMAND);
   else if (fit == Fit::LEAST_SQUARES || (fit == Fit::MINIMAL_ENERGY &&
@@ -392,6 +448,20 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
         spline.set_free_value(s, Value(Value_traits<Value>::zero() + add));
         return;
       }
+#if defined(__GNUC__)
+      if constexpr (std::is_same_v<Value, double>) {
+        // a compare-and-swap on the value instead of a lock (a lock and an unlock per
+        // middle-inner share took 3% of the CPU of a default fit at 10^6 points)
+        double* const target = const_cast<double*>(spline.values().data()) + s;
+        double expected, sum;
+        __atomic_load(target, &expected, __ATOMIC_RELAXED);
+        do
+          sum = expected + add;
+        while (!__atomic_compare_exchange(target, &expected, &sum, true, __ATOMIC_RELAXED,
+                                          __ATOMIC_RELAXED));
+        return;
+      }
+#endif
       std::lock_guard<std::mutex> hold(locks[s % locks.size()]);
       spline.set_free_value(s, Value(spline.value(s) + add));
     };
@@ -417,11 +487,13 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
     const std::size_t block =
         options.local_block > 0 ? options.local_block : internal::local_polynomial_block;
     std::vector<std::uint32_t> vertices;
-    for (std::size_t first = 0; first < V; first += block) {
-      vertices.resize((std::min)(block, V - first));
+    for (std::size_t first = 0; first < V; first += vertices.size()) {
+      const bool fitted = first == 0 && prefitted > 0;
+      vertices.resize(fitted ? prefitted : (std::min)(block, V - first));
       for (std::size_t i = 0; i < vertices.size(); ++i)
         vertices[i] = std::uint32_t(first + i);
-      local->fit(vertices);
+      if (!fitted)
+        local->fit(vertices);
       internal::parallel_for_index(
           vertices.size(), internal::thread_count(vertices.size(), exact ? 16 : 2000),
           [&](std::size_t i) { shares(vertices[i]); }, exact ? 1 : 64);
