@@ -2723,6 +2723,43 @@ void expect_the_domain_of_cgals_triangulation(const TS::Scattered_data<K>& data)
     ASSERT_EQ(domain.edge(e), reference.edge(e));
     ASSERT_EQ(domain.edge_faces(e), reference.edge_faces(e));
   }
+  // (built without the checks that only a triangulation's faces pass: the same stars)
+  auto range = [](const auto& r) { return std::vector<Index>(r.first, r.second); };
+  for (Index v = 0; v < domain.number_of_vertices(); ++v) {
+    ASSERT_EQ(range(domain.neighbours(v)), range(reference.neighbours(v))) << v;
+    ASSERT_EQ(range(domain.star_faces(v)), range(reference.star_faces(v))) << v;
+    ASSERT_EQ(range(domain.star_edges(v)), range(reference.star_edges(v))) << v;
+    ASSERT_EQ(domain.is_boundary_vertex(v), reference.is_boundary_vertex(v)) << v;
+  }
+  EXPECT_EQ(domain.number_of_boundary_vertices(), reference.number_of_boundary_vertices());
+  EXPECT_EQ(domain.number_of_components(), 1u);
+  EXPECT_EQ(domain.number_of_boundary_loops(), 1u);
+}
+
+TEST(DelaunayDomain, TriangulationFacesStillCheckWhatTheyRead) {
+  // The constructor for a CGAL triangulation's faces (delaunay_domain()) skips the checks
+  // that only such faces pass; those it keeps still fail as the checked constructor does.
+  using Point = Epick::Point_2;
+  using Faces = std::vector<std::array<Index, 3>>;
+  auto build = [](std::vector<Point> points, Faces faces) {
+    return Planar_domain<Epick>(TS::internal::Triangulation_faces_tag(), std::move(points),
+                                std::move(faces));
+  };
+  const std::vector<Point> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const Planar_domain<Epick> fine = build(square, {{{0, 1, 2}}, {{0, 2, 3}}});
+  EXPECT_EQ(fine.number_of_interior_edges(), 1u);
+  EXPECT_TRUE(throws_with([&] { build(square, {}); }, "no triangle"));
+  std::vector<Point> bad = square;
+  bad[2] = Point(std::numeric_limits<double>::quiet_NaN(), 1);
+  EXPECT_TRUE(throws_with([&] { build(bad, {{{0, 1, 2}}, {{0, 2, 3}}}); }, "non-finite"));
+  // two triangles meeting at vertex 0 only: not one fan
+  const std::vector<Point> bowtie{{0, 0}, {1, 0}, {1, 1}, {-1, 0}, {-1, -1}};
+  EXPECT_TRUE(throws_with([&] { build(bowtie, {{{0, 1, 2}}, {{0, 3, 4}}}); }, "non-manifold"));
+  EXPECT_TRUE(throws_with(
+      [&] {
+        Planar_domain<Epick>(bowtie, {{{0, 1, 2}}, {{0, 3, 4}}});
+      },
+      "non-manifold"));
 }
 
 // The Hilbert permutation that numbers a domain's vertices sorts its first level on all

@@ -77,7 +77,9 @@ domain_from_numbered_triangulation(const Triangulation& triangulation, const InD
     return std::nullopt;
   release(used);
   sort_faces(triangles, points.size());
-  return Planar_domain<GeomTraits>(std::move(points), std::move(triangles), GeomTraits(), false);
+  // (rotated, each face keeps its orientation: still counter-clockwise)
+  return Planar_domain<GeomTraits>(Triangulation_faces_tag(), std::move(points),
+                                   std::move(triangles));
 }
 
 } // namespace internal

@@ -48,7 +48,7 @@ inline bool& break_face_cycles_first() {
   static bool first = true;
   return first;
 }
-// Work for the C1_quintic_spline constructor to do beside its plan (its f(domain)).
+// Work for the C1_quintic_spline constructor to do beside its plan: f(domain, planned).
 template <class F>
 struct While_planning {
   F f;
