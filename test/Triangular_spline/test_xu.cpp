@@ -3216,6 +3216,89 @@ TEST(LocalFit, VectorisedQrKeepsTheBitsOfTheScalarOne) {
     std::cout << "note: no AVX2 clones on this build or processor; the portable path only\n";
 }
 
+// The AVX2 clone fits four vertices at a time, their groups of degrees 2-3 and 4-5
+// factorized and scored side by side (one vertex per lane); a vertex with too few candidates
+// for a group, or whose group loses a column, is fitted alone. Every vertex's polynomial is
+// the one the portable one-vertex code gives, bit for bit: whatever vertices share its
+// batch (all, lists of 1 to 7 in reverse order, fit_first()), on random points, points on
+// three lines (dependent columns: the wider refits), a 14-point set (no quintic group) and
+// a 40-point one (some vertices with the cubic group only), for every largest degree.
+TEST(LocalFit, LaneBatchesKeepTheBitsOfOneVertexFits) {
+  std::uint64_t state = 20261207;
+  auto next = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(state >> 11) * (1.0 / 9007199254740992.0);
+  };
+  auto random_points = [&](std::size_t n) {
+    std::vector<Epick::Point_2> points{{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+    while (points.size() < n) {
+      const double x = next();
+      points.emplace_back(x, next());
+    }
+    return points;
+  };
+  std::vector<std::vector<Epick::Point_2>> sets{random_points(300), random_points(14),
+                                                random_points(40)};
+  {
+    std::vector<Epick::Point_2> lines; // three lines and a few points off them
+    for (int row = 0; row < 3; ++row)
+      for (int i = 0; i < 40; ++i)
+        lines.emplace_back(i / 39.0 + 1e-3 * next(), 0.5 * row);
+    for (int i = 0; i < 6; ++i)
+      lines.emplace_back(next(), next());
+    sets.push_back(lines);
+  }
+  // degree, resolution, radius, gradient and a value off the vertex: every coefficient
+  auto same = [](const auto& a, const auto& b, const auto& domain, Index v) {
+    const Epick::Point_2 off(domain.point(v).x() + 0.01, domain.point(v).y() - 0.02);
+    return a.degree(v) == b.degree(v) && a.resolution(v) == b.resolution(v) &&
+           a.radius(v) == b.radius(v) && a.gradient(v) == b.gradient(v) &&
+           a.value(v, off) == b.value(v, off);
+  };
+  const bool clones = TS::internal::use_avx2_clones();
+  for (const auto& points : sets) {
+    const auto domain = delaunay_of<Epick>(points);
+    const Index V = Index(domain.number_of_vertices());
+    std::vector<double> z;
+    for (const auto& p : domain.points())
+      z.push_back(std::exp(p.x()) * std::sin(2 * p.y()) + 0.1 * std::abs(p.x() - 0.4) +
+                  1e-3 * next());
+    for (int degree = 1; degree <= 5; ++degree) {
+      TS::internal::avx2_clones_allowed() = false; // the portable code: one vertex at a time
+      const TS::Local_polynomials<Epick> alone(domain, z, degree);
+      TS::internal::avx2_clones_allowed() = true;
+      const TS::Local_polynomials<Epick> all(domain, z, degree);
+      TS::Local_polynomials<Epick> some(domain, z, degree, TS::Degree_selection::CROSS_VALIDATION,
+                                        1, TS::Exact_elimination::FRACTION_FREE,
+                                        TS::Local_polynomial_storage::ON_DEMAND);
+      std::array<int, 6> degrees{};
+      for (Index v = 0; v < V; ++v) {
+        ++degrees[std::size_t(alone.degree(v))];
+        EXPECT_TRUE(same(all, alone, domain, v)) << V << " points, degree " << degree << ", " << v;
+      }
+      if (degree == 5 && V == 300) { // the batches see every group
+        EXPECT_GT(degrees[5], 0);
+      }
+      for (std::size_t size = 1; size <= 7; ++size)
+        for (Index first = 0; first < V; first += Index(size)) {
+          std::vector<Index> list;
+          for (Index v = (std::min)(V, first + Index(size)); v-- > first;)
+            list.push_back(v);
+          some.fit(list);
+          for (Index v : list)
+            EXPECT_TRUE(same(some, alone, domain, v))
+                << V << " points, degree " << degree << ", batch of " << size << ", " << v;
+        }
+      std::atomic<bool> stop{false};
+      ASSERT_EQ(some.fit_first(std::size_t(V) - 1, stop), std::size_t(V) - 1);
+      for (Index v = 0; v + 1 < V; ++v)
+        EXPECT_TRUE(same(some, alone, domain, v)) << V << " points, fit_first, " << v;
+    }
+  }
+  if (!clones)
+    std::cout << "note: no AVX2 clones on this build or processor; the portable path only\n";
+}
+
 namespace {
 
 template <class K, class Value>

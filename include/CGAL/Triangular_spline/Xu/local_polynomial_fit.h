@@ -21,11 +21,18 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <string>
 #include <thread>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#if defined(__GNUC__) && !defined(CGAL_TRIANGULAR_SPLINE_NO_LANE_BATCHES)
+#define CGAL_TRIANGULAR_SPLINE_LANE_BATCHES 1
+#else
+#define CGAL_TRIANGULAR_SPLINE_LANE_BATCHES 0
+#endif
 
 namespace CGAL {
 namespace Triangular_spline {
@@ -228,13 +235,14 @@ public:
     allocate(count);
     for (std::size_t i = 0; i < count; ++i)
       m_stored_at[i] = static_cast<std::uint32_t>(i);
-    std::size_t fitted = 0;
+    auto fit = [&]() -> std::size_t {
 #if CGAL_TRIANGULAR_SPLINE_AVX2_CLONES
-    if (internal::use_avx2_clones())
-      fitted = fit_first_avx2(count, stop);
-    else
+      if (internal::use_avx2_clones())
+        return fit_first_avx2(count, stop);
 #endif
-      fitted = fit_first_share<false>(count, stop);
+      return fit_first_share<false>(count, stop);
+    };
+    const std::size_t fitted = fit();
     for (std::size_t i = fitted; i < count; ++i)
       m_stored_at[i] = not_kept;
     m_kept.resize(fitted);
@@ -428,10 +436,28 @@ private:
   // Fits vertex_at(i) for i = first, first + step, ... below n (one thread's share). The
   // double kernels are inlined into it; fit_every() and fit_every_avx2() compile it for
   // SSE2 and for AVX2 (internal/avx2_clones.h: the same bits, the kernels in 0.8 times the
-  // time).
+  // time). With AVX, four vertices at a time (fit_batch(): the same bits again, the fits in
+  // 0.7 times the time on random points).
   template <bool Wide, class Vertex_at>
   CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE void fit_share(std::size_t first, std::size_t step,
                                                       std::size_t n, const Vertex_at& vertex_at) {
+#if CGAL_TRIANGULAR_SPLINE_LANE_BATCHES
+    if constexpr (!exact && (Wide || native_wide_lanes)) {
+      Lanes lanes;
+      std::array<Index, batch_lanes> batch;
+      std::size_t count = 0;
+      for (std::size_t i = first; i < n; i += step) {
+        batch[count++] = vertex_at(i);
+        if (count == batch_lanes) {
+          fit_batch<Wide>(batch, count, lanes);
+          count = 0;
+        }
+      }
+      if (count > 0)
+        fit_batch<Wide>(batch, count, lanes);
+      return;
+    }
+#endif
     Workspace work;
     for (std::size_t i = first; i < n; i += step)
       fit_vertex<Wide>(vertex_at(i), *m_data, work);
@@ -445,8 +471,23 @@ private:
   template <bool Wide>
   CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE std::size_t fit_first_share(std::size_t n,
                                                                    const std::atomic<bool>& stop) {
-    Workspace work;
     std::size_t i = 0;
+#if CGAL_TRIANGULAR_SPLINE_LANE_BATCHES
+    if constexpr (!exact && (Wide || native_wide_lanes)) {
+      Lanes lanes;
+      for (; i < n; i += batch_lanes) { // 64 is a multiple of batch_lanes
+        if (i % 64 == 0 && stop.load(std::memory_order_relaxed))
+          break;
+        std::array<Index, batch_lanes> batch;
+        const std::size_t count = (std::min)(batch_lanes, n - i);
+        for (std::size_t l = 0; l < count; ++l)
+          batch[l] = static_cast<Index>(i + l);
+        fit_batch<Wide>(batch, count, lanes);
+      }
+      return (std::min)(i, n);
+    }
+#endif
+    Workspace work;
     for (; i < n; ++i) {
       if (i % 64 == 0 && stop.load(std::memory_order_relaxed))
         break;
@@ -479,7 +520,7 @@ private:
   struct Workspace {
     std::vector<Index> ring;         // the first ring, in point order (the plane's points)
     std::vector<Index> points;       // candidates from the rings, nearest first
-    std::vector<std::uint32_t> mark; // BFS marks, by vertex (stamp = v + 1)
+    std::vector<std::uint32_t> mark; // BFS marks, by vertex (stamp = v + 1; lanes share one)
     // the double fits, column-major: design, rhs (reflected in place), their originals, the
     // rows of Q, leverages and fitted values
     std::vector<double> design, rhs, original, rhs_original, q, leverage, fitted;
@@ -499,7 +540,7 @@ private:
                                         {1, 4, 6, 4, 1, 0}, {1, 5, 10, 10, 5, 1}};
     return table[n][k];
   }
-  static int unknowns(int d) {
+  static constexpr int unknowns(int d) {
     return (d + 1) * (d + 2) / 2 - 1;
   }
 
@@ -570,7 +611,7 @@ private:
   }
 
   // The points a fit of degree d takes: 1.5 times its unknowns (a plane: 2).
-  static std::size_t needed(int d) {
+  static constexpr std::size_t needed(int d) {
     return d == 1 ? 2 : std::size_t((3 * unknowns(d) + 1) / 2);
   }
 
@@ -598,14 +639,14 @@ private:
       129.746337890625,
       291.92926025390625,
       656.8408355712891}; // 1.5^(2 ring)
-  void gather(Index v, Workspace& work) const {
+  void gather(Index v, Workspace& work, std::vector<std::uint32_t>& mark) const {
     const Domain& domain = *m_domain;
-    if (work.mark.size() != domain.number_of_vertices())
-      work.mark.assign(domain.number_of_vertices(), 0);
+    if (mark.size() != domain.number_of_vertices())
+      mark.assign(domain.number_of_vertices(), 0);
     const std::uint32_t stamp = static_cast<std::uint32_t>(v) + 1;
     work.points.clear();
     work.ring_of.clear();
-    work.mark[v] = stamp;
+    mark[v] = stamp;
     const std::size_t wanted = 2 * needed(m_max_degree);
     std::size_t begin = 0;
     for (int ring = 0; ring < max_rings; ++ring) {
@@ -613,8 +654,8 @@ private:
       auto visit = [&](Index u) {
         const auto [nb, ne] = domain.neighbours(u);
         for (auto w = nb; w != ne; ++w)
-          if (work.mark[*w] != stamp) {
-            work.mark[*w] = stamp;
+          if (mark[*w] != stamp) {
+            mark[*w] = stamp;
             work.points.push_back(*w);
             work.ring_of.push_back(ring);
           }
@@ -989,6 +1030,277 @@ private:
     }
   }
 
+  // The groups of degrees 2-3 and 4-5 of nearly every vertex, on the nearest needed(3) and
+  // needed(5) candidates: their factorizations and scores dominate the fits.
+  static constexpr std::size_t batch_points = needed(max_supported_degree);
+  struct Prefactored {
+    Group group;
+    std::array<double, 3> score; // of the plane and the group's two degrees on its points
+  };
+#if CGAL_TRIANGULAR_SPLINE_LANE_BATCHES
+  // Four vertices' groups (of degrees 2-3, then 4-5) factorized side by side, one vertex per
+  // lane of a vector of four doubles: factorize() and scores() on the same points, operation for
+  // operation (the same sums in the same order, dot()'s four partial sums included), so
+  // the same bits, without the horizontal sums, tails and short loops that kept the
+  // one-vertex kernels at about a quarter of the vector units' rate. Generic vectors: two
+  // SSE2 or one AVX2 operation each, the same bits either way.
+  static constexpr std::size_t batch_lanes = 4;
+  typedef double Lane_vector __attribute__((vector_size(32)));
+  // Only where a vector of four doubles is one register: as two SSE2 registers the lanes
+  // took 1.12 times the one-vertex kernels' time (200000 random points).
+#if defined(__AVX__)
+  static constexpr bool native_wide_lanes = true;
+#else
+  static constexpr bool native_wide_lanes = false;
+#endif
+  struct Lane_arrays { // column-major as in factorize(): entry i of column k at [k * n + i]
+    Lane_vector design[max_columns * batch_points], original[max_columns * batch_points];
+    Lane_vector q[max_columns * batch_points]; // the rows of Q = A R^-1, as in scores()
+    Lane_vector rhs[D * batch_points], rhs_original[D * batch_points];
+    Lane_vector fitted[D * batch_points], leverage[batch_points];
+    Lane_vector R[max_columns * max_columns], c[D * max_columns];
+  };
+  struct Lanes {
+    std::array<Workspace, batch_lanes> work;
+    std::unique_ptr<Lane_arrays> arrays{new Lane_arrays};
+    std::array<std::array<Prefactored, batch_lanes>, 2> pre; // degrees 2-3, 4-5
+  };
+  // dot() on every lane (the result through a reference: a vector of four doubles passed by
+  // value has another ABI with and without AVX)
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE static void dot_lanes(const Lane_vector* x,
+                                                             const Lane_vector* y,
+                                                             std::size_t begin, std::size_t end,
+                                                             Lane_vector& result) {
+    Lane_vector s0 = {0, 0, 0, 0}, s1 = s0, s2 = s0, s3 = s0;
+    std::size_t i = begin;
+    for (; i + 4 <= end; i += 4) {
+      s0 += x[i] * y[i];
+      s1 += x[i + 1] * y[i + 1];
+      s2 += x[i + 2] * y[i + 2];
+      s3 += x[i + 3] * y[i + 3];
+    }
+    for (; i < end; ++i)
+      s0 += x[i] * y[i];
+    result = (s0 + s1) + (s2 + s3);
+  }
+
+  // factorize() of degree Top (3 or 5) on the first needed(Top) candidates and scores() of
+  // the plane and degrees Top - 1 and Top, for the lanes `eligible` (the others compute a
+  // copy of an eligible lane and are ignored), into lanes.pre[Top / 2 - 1]; returns the
+  // lanes whose factorization has every column (finish_vertex() redoes the others).
+  template <int Top>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE std::array<bool, batch_lanes>
+  factorize_lanes(const std::array<Index, batch_lanes>& batch,
+                  const std::array<bool, batch_lanes>& eligible, Lanes& lanes) const {
+    static_assert(Top == 3 || Top == max_supported_degree, "the groups of fit_vertex()");
+    const Domain& domain = *m_domain;
+    const std::vector<Value>& values = *m_data;
+    constexpr std::size_t n = needed(Top);
+    constexpr int u = unknowns(Top);
+    Lane_arrays& L = *lanes.arrays;
+    std::array<Prefactored, batch_lanes>& pre = lanes.pre[Top / 2 - 1];
+    std::array<std::size_t, batch_lanes> source;
+    std::size_t first = 0;
+    while (!eligible[first])
+      ++first;
+    std::array<bool, batch_lanes> valid;
+    Lane_vector cx, cy, scale;
+    for (std::size_t l = 0; l < batch_lanes; ++l) {
+      source[l] = eligible[l] ? l : first;
+      const Index v = batch[source[l]];
+      const std::vector<Index>& points = lanes.work[source[l]].points;
+      Group& g = pre[l].group;
+      const Point_2& center = domain.point(v);
+      cx[l] = CGAL::to_double(center.x());
+      cy[l] = CGAL::to_double(center.y());
+      double radius2 = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const Point_2& p = domain.point(points[i]);
+        const double dx = CGAL::to_double(p.x()) - cx[l], dy = CGAL::to_double(p.y()) - cy[l];
+        radius2 = (std::max)(radius2, dx * dx + dy * dy);
+      }
+      const double radius = std::sqrt(radius2);
+      valid[l] = eligible[l] && radius > 0 && std::isfinite(radius);
+      g.on_ring = false;
+      g.n = n;
+      g.scale = valid[l] ? std::exp2(std::ceil(std::log2(radius))) : 1.0;
+      g.radius = radius;
+      g.columns = u;
+      scale[l] = g.scale;
+    }
+    // the weighted design and right-hand sides, as factorize() builds them
+    const Lane_vector one = {1, 1, 1, 1};
+    Lane_vector weight_sum = {0, 0, 0, 0};
+    for (std::size_t i = 0; i < n; ++i) {
+      Lane_vector px = {0, 0, 0, 0}, py = px, w = px;
+      std::array<Lane_vector, std::size_t(D)> difference;
+      for (std::size_t l = 0; l < batch_lanes; ++l) {
+        const Index v = batch[source[l]], p = lanes.work[source[l]].points[i];
+        px[l] = CGAL::to_double(domain.point(p).x());
+        py[l] = CGAL::to_double(domain.point(p).y());
+        for (int k = 0; k < D; ++k)
+          difference[std::size_t(k)][l] =
+              CGAL::to_double(Value_traits<Value>::coordinate(values[p], k)) -
+              CGAL::to_double(Value_traits<Value>::coordinate(values[v], k));
+      }
+      const Lane_vector xi = (px - cx) / scale, eta = (py - cy) / scale;
+      const Lane_vector r2 = xi * xi + eta * eta;
+      for (std::size_t l = 0; l < batch_lanes; ++l)
+        w[l] = 1 / std::sqrt(r2[l]);
+      weight_sum += w * w;
+      std::array<Lane_vector, Top + 1> xp, yp;
+      xp[0] = w;
+      yp[0] = one;
+      for (std::size_t e = 1; e <= std::size_t(Top); ++e) {
+        xp[e] = xp[e - 1] * xi;
+        yp[e] = yp[e - 1] * eta;
+      }
+      std::size_t col = 0;
+      for (std::size_t t = 1; t <= std::size_t(Top); ++t)
+        for (std::size_t k = 0; k <= t; ++k, ++col)
+          L.design[col * n + i] = xp[t - k] * yp[k];
+      for (std::size_t k = 0; k < std::size_t(D); ++k)
+        L.rhs[k * n + i] = w * difference[k];
+    }
+    std::copy(L.design, L.design + std::size_t(u) * n, L.original);
+    std::copy(L.rhs, L.rhs + std::size_t(D) * n, L.rhs_original);
+    // Householder QR, as factorize()
+    for (std::size_t k = 0; k < std::size_t(u); ++k) {
+      Lane_vector* a = L.design + k * n;
+      Lane_vector norm2, below2, sigma = {0, 0, 0, 0}, alpha = sigma, beta = sigma;
+      dot_lanes(L.original + k * n, L.original + k * n, 0, n, norm2);
+      dot_lanes(a, a, k, n, below2);
+      for (std::size_t l = 0; l < batch_lanes; ++l) {
+        sigma[l] = std::sqrt(below2[l]);
+        const double ratio = norm2[l] > 0 ? sigma[l] / std::sqrt(norm2[l]) : 0;
+        if (!(ratio > 1e-14))
+          valid[l] = false; // factorize() stops here: fit_vertex() redoes it
+        pre[l].group.ratio[k] = ratio;
+        alpha[l] = a[k][l] > 0 ? -sigma[l] : sigma[l];
+      }
+      a[k] -= alpha;
+      for (std::size_t l = 0; l < batch_lanes; ++l)
+        beta[l] = sigma[l] * std::abs(a[k][l]);
+      for (std::size_t j = k + 1; j < std::size_t(u) + std::size_t(D); ++j) {
+        Lane_vector* x = j < std::size_t(u) ? L.design + j * n : L.rhs + (j - std::size_t(u)) * n;
+        Lane_vector f;
+        dot_lanes(a, x, k, n, f);
+        f /= beta;
+        for (std::size_t i = k; i < n; ++i)
+          x[i] -= f * a[i];
+      }
+      L.R[k * max_columns + k] = alpha;
+      for (std::size_t j = 0; j < std::size_t(D); ++j)
+        L.c[j * max_columns + k] = L.rhs[j * n + k];
+    }
+    for (std::size_t j = 0; j < std::size_t(u); ++j)
+      for (std::size_t i = 0; i < j; ++i)
+        L.R[j * max_columns + i] = L.design[j * n + i];
+    // scores() of the plane and degrees Top - 1 and Top
+    constexpr std::array<std::size_t, 3> checkpoint{
+        {std::size_t(unknowns(1)), std::size_t(unknowns(Top - 1)), std::size_t(unknowns(Top))}};
+    const Lane_vector zero = {0, 0, 0, 0};
+    std::fill(L.leverage, L.leverage + n, zero);
+    std::fill(L.fitted, L.fitted + std::size_t(D) * n, zero);
+    std::size_t next = 0;
+    for (std::size_t j = 0; j < std::size_t(u); ++j) {
+      Lane_vector* y = L.q + j * n;
+      std::copy(L.original + j * n, L.original + (j + 1) * n, y);
+      std::size_t l = 0;
+      for (; l + 2 <= j; l += 2) {
+        const Lane_vector r0 = L.R[j * max_columns + l], r1 = L.R[j * max_columns + l + 1];
+        const Lane_vector *y0 = L.q + l * n, *y1 = L.q + (l + 1) * n;
+        for (std::size_t i = 0; i < n; ++i)
+          y[i] = (y[i] - r0 * y0[i]) - r1 * y1[i];
+      }
+      if (l < j) {
+        const Lane_vector r = L.R[j * max_columns + l];
+        const Lane_vector* y0 = L.q + l * n;
+        for (std::size_t i = 0; i < n; ++i)
+          y[i] -= r * y0[i];
+      }
+      const Lane_vector inverse = one / L.R[j * max_columns + j];
+      for (std::size_t i = 0; i < n; ++i) {
+        y[i] *= inverse;
+        L.leverage[i] += y[i] * y[i];
+      }
+      for (std::size_t k = 0; k < std::size_t(D); ++k) {
+        const Lane_vector c = L.c[k * max_columns + j];
+        Lane_vector* f = L.fitted + k * n;
+        for (std::size_t i = 0; i < n; ++i)
+          f[i] += y[i] * c;
+      }
+      if (j + 1 != checkpoint[next])
+        continue;
+      Lane_vector sum = zero;
+      std::array<bool, batch_lanes> infinite{};
+      for (std::size_t i = 0; i < n; ++i) {
+        Lane_vector residual2 = zero;
+        for (std::size_t k = 0; k < std::size_t(D); ++k) {
+          const Lane_vector r = L.rhs_original[k * n + i] - L.fitted[k * n + i];
+          residual2 += r * r;
+        }
+        const Lane_vector keep = one - L.leverage[i];
+        for (std::size_t m = 0; m < batch_lanes; ++m)
+          infinite[m] = infinite[m] || !(keep[m] > 1e-8);
+        sum += residual2 / (keep * keep);
+      }
+      for (std::size_t m = 0; m < batch_lanes; ++m)
+        pre[m].score[next] =
+            infinite[m] ? std::numeric_limits<double>::infinity() : sum[m] / weight_sum[m];
+      ++next;
+    }
+    for (std::size_t l = 0; l < batch_lanes; ++l) {
+      if (!valid[l])
+        continue;
+      Group& g = pre[l].group;
+      g.weight_sum = weight_sum[l];
+      for (std::size_t j = 0; j < std::size_t(u); ++j)
+        for (std::size_t i = 0; i <= j; ++i)
+          g.R[j * max_columns + i] = L.R[j * max_columns + i][l];
+      for (std::size_t k = 0; k < std::size_t(D); ++k)
+        for (std::size_t j = 0; j < std::size_t(u); ++j)
+          g.c[k * max_columns + j] = L.c[k * max_columns + j][l];
+    }
+    return valid;
+  }
+
+  // fit_vertex() of up to batch_lanes vertices, their groups of degrees 2-3 and 4-5
+  // factorized side by side
+  template <bool Wide>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE void fit_batch(const std::array<Index, batch_lanes>& batch,
+                                                      std::size_t count, Lanes& lanes) {
+    const std::vector<Value>& values = *m_data;
+    std::array<bool, batch_lanes> started{}, cubic{}, quintic{};
+    bool any_cubic = false, any_quintic = false;
+    for (std::size_t l = 0; l < count; ++l) {
+      Workspace& work = lanes.work[l];
+      started[l] = start_vertex(batch[l], values, work, lanes.work[0].mark);
+      if (!started[l] || m_max_degree < 3 || work.points.size() < needed(3))
+        continue;
+      // the nearest candidates, in the order finish_vertex() takes them (prefixes of one
+      // total order: its own calls for as many or fewer of them then change nothing)
+      cubic[l] = any_cubic = true;
+      if (m_max_degree == max_supported_degree && work.points.size() >= batch_points) {
+        order_nearest(batch_points, work);
+        quintic[l] = any_quintic = true;
+      } else {
+        order_nearest(needed(3), work);
+      }
+    }
+    std::array<bool, batch_lanes> cubic_valid{}, quintic_valid{};
+    if (any_cubic)
+      cubic_valid = factorize_lanes<3>(batch, cubic, lanes);
+    if (any_quintic)
+      quintic_valid = factorize_lanes<max_supported_degree>(batch, quintic, lanes);
+    for (std::size_t l = 0; l < count; ++l)
+      if (started[l])
+        finish_vertex<Wide>(batch[l], values, lanes.work[l],
+                            {{cubic_valid[l] ? &lanes.pre[0][l] : nullptr,
+                              quintic_valid[l] ? &lanes.pre[1][l] : nullptr}});
+  }
+#endif
+
   // Whether the first u columns of g are independent (each at a distance from the span of
   // the previous ones of at least 1e-6 of its length).
   // The largest Lebesgue constant a local fit may have near its vertex (see fit_vertex):
@@ -1094,10 +1406,25 @@ private:
   template <bool Wide>
   CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE void fit_vertex(Index v, const std::vector<Value>& values,
                                                        Workspace& work) {
+    if (start_vertex(v, values, work, work.mark))
+      finish_vertex<Wide>(v, values, work, {});
+  }
+  // The constant term and the neighbourhood; false if the fit is a constant.
+  bool start_vertex(Index v, const std::vector<Value>& values, Workspace& work,
+                    std::vector<std::uint32_t>& mark) {
     coefficient(v, 0, 0) = values[v];
     if (m_max_degree == 0)
-      return;
-    gather(v, work);
+      return false;
+    gather(v, work, mark);
+    return true;
+  }
+  // The rest of fit_vertex(), after start_vertex(); pre[0] and pre[1], where given, are the
+  // groups of degrees 2-3 and 4-5, factorized and scored by factorize_lanes() (the bits
+  // factorize() and scores() give).
+  template <bool Wide>
+  CGAL_TRIANGULAR_SPLINE_ALWAYS_INLINE void finish_vertex(Index v, const std::vector<Value>& values,
+                                                          Workspace& work,
+                                                          std::array<const Prefactored*, 2> pre) {
     struct Candidate {
       int degree = -1;
       std::size_t group = 0;
@@ -1106,7 +1433,10 @@ private:
     // A plane fits the whole first ring; degrees 2 and 3 the points the cubic needs, nearest
     // first, and degrees 4 and 5 the quintic's (fewer where fewer exist): one QR per group.
     boost::container::static_vector<Candidate, max_supported_degree> candidates;
+    // the groups factorized here (at most three, and two wider refits), and every group's
+    // own or prefactored one (read in place: a copy cost 3% of the fits)
     boost::container::static_vector<Group, max_supported_degree> groups;
+    boost::container::static_vector<const Group*, max_supported_degree> group_at;
     boost::container::static_vector<double, max_supported_degree> plane_score;
     int d = 1;
     while (d <= m_max_degree) {
@@ -1120,13 +1450,21 @@ private:
       int top = high;
       while (top > d && needed(top) > n)
         --top;
-      groups.emplace_back();
-      Group& g = groups.back();
-      g.on_ring = d == 1;
-      if (!factorize<Wide>(v, values, points, top, n, work, g)) {
-        groups.pop_back();
-        break; // no extent: no higher degree either
+      const Prefactored* const prefactored =
+          d == 2 && top == 3 && n == needed(3)                         ? pre[0]
+          : d == 4 && top == max_supported_degree && n == batch_points ? pre[1]
+                                                                       : nullptr;
+      const Group* own = prefactored ? &prefactored->group : nullptr;
+      if (!own) {
+        Group& fresh = groups.emplace_back();
+        fresh.on_ring = d == 1;
+        if (!factorize<Wide>(v, values, points, top, n, work, fresh)) {
+          groups.pop_back();
+          break; // no extent: no higher degree either
+        }
+        own = &fresh;
       }
+      const Group& g = *own;
       // The degrees of this group the points determine: a plane needs its two columns
       // independent to 1e-14 (linear precision however thin the neighbourhood), higher
       // degrees every column to 1e-6; exact builds accept a plane in any case and solve it
@@ -1144,7 +1482,10 @@ private:
       }
       const bool plane = g.columns >= 2;
       std::array<double, max_supported_degree + 1> s{};
-      if (plane)
+      if (plane && prefactored)
+        std::copy(prefactored->score.begin(), prefactored->score.begin() + std::ptrdiff_t(count),
+                  s.begin());
+      else if (plane)
         scores<Wide>(g, u, count, work, s);
       // Points on few lines do not determine the group's top degree (a quintic needs them on
       // six), and with 1.5 points per unknown one of them may fit a direction alone (its
@@ -1165,7 +1506,7 @@ private:
           std::array<double, max_supported_degree + 1> s2{};
           scores<Wide>(more, u2, count2, work, s2);
           if (std::isfinite(s2[count2 - 1])) {
-            g = more;
+            own = &groups.emplace_back(more);
             u = u2;
             count = count2;
             s = s2;
@@ -1174,12 +1515,13 @@ private:
           }
         }
       }
+      group_at.push_back(own);
       plane_score.push_back(plane ? s[0] : std::numeric_limits<double>::infinity());
       if (d == 1 && (plane || exact))
         candidates.push_back(
-            {1, groups.size() - 1, plane ? s[0] : std::numeric_limits<double>::infinity()});
+            {1, group_at.size() - 1, plane ? s[0] : std::numeric_limits<double>::infinity()});
       for (std::size_t k = 1; k < count; ++k)
-        candidates.push_back({degree_of[k - 1], groups.size() - 1, s[k]});
+        candidates.push_back({degree_of[k - 1], group_at.size() - 1, s[k]});
       d = top + 1;
     }
     if (candidates.empty()) {
@@ -1213,7 +1555,7 @@ private:
     // off half a cell from the hull (constant 7e3); with the check 1.1e-4, the grid's own.
     for (; candidates[chosen].degree > 1; --chosen) {
       const Candidate& candidate = candidates[chosen];
-      const Group& g = groups[candidate.group];
+      const Group& g = *group_at[candidate.group];
       if (well_determined(g, unknowns(candidate.degree)))
         break;
       const double L =
@@ -1237,7 +1579,7 @@ private:
     }
     for (std::size_t k = chosen + 1; k-- > 0;) {
       const Candidate& candidate = candidates[k];
-      const Group& g = groups[candidate.group];
+      const Group& g = *group_at[candidate.group];
       const int degree = candidate.degree;
       m_scale[v] = FT(1) / FT(g.scale);
       m_radius[v] = float(g.radius);
