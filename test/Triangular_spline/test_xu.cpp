@@ -4416,6 +4416,46 @@ TEST(LeastSquares, ConjugateGradientsBoundTheirErrorByTheResidual) {
   EXPECT_GT(solved.last_change, 1e-8 * range);
 }
 
+TEST(LeastSquares, PackedBlockInversesAreTheInverses) {
+  // The preconditioner's blocks (packed lower triangles of I + X^T X) inverted in place:
+  // A^-1 A = I to rounding, for the sizes the vertices own (1 to 30 unknowns) and columns
+  // scaled by up to 10^3 (propagation weights), and a 2 x 2 block exactly.
+  std::mt19937 random(41);
+  std::normal_distribution<double> normal;
+  std::vector<double> scratch;
+  for (std::size_t k = 1; k <= 30; ++k)
+    for (double scale : {1.0, 1e3}) {
+      SCOPED_TRACE(k);
+      Eigen::MatrixXd X(Eigen::Index(k + 2), Eigen::Index(k));
+      for (Eigen::Index i = 0; i < X.rows(); ++i)
+        for (Eigen::Index j = 0; j < X.cols(); ++j)
+          X(i, j) = normal(random) * (j % 3 == 0 ? scale : 1.0);
+      const Eigen::MatrixXd A =
+          Eigen::MatrixXd::Identity(Eigen::Index(k), Eigen::Index(k)) + X.transpose() * X;
+      std::vector<double> packed;
+      for (Eigen::Index i = 0; i < A.rows(); ++i)
+        for (Eigen::Index j = 0; j <= i; ++j)
+          packed.push_back(A(i, j));
+      TS::internal::invert_packed_positive_definite(packed.data(), k, scratch);
+      Eigen::MatrixXd inverse(A.rows(), A.cols());
+      std::size_t at = 0;
+      for (Eigen::Index i = 0; i < A.rows(); ++i)
+        for (Eigen::Index j = 0; j <= i; ++j)
+          inverse(i, j) = inverse(j, i) = packed[at++];
+      // A >= I, so |A^-1| <= 1; the residual is rounding times A's condition number
+      const double condition = A.norm() * A.inverse().norm();
+      EXPECT_LT((inverse * A - Eigen::MatrixXd::Identity(A.rows(), A.cols())).cwiseAbs().maxCoeff(),
+                1e-14 * condition * double(k));
+    }
+  // [[2, 1], [1, 2]]^-1 = [[2, -1], [-1, 2]] / 3; every step is exact but the divisions
+  // by 3 and the square roots, so compare to the last bits
+  std::vector<double> two = {2, 1, 2};
+  TS::internal::invert_packed_positive_definite(two.data(), 2, scratch);
+  EXPECT_NEAR(two[0], 2.0 / 3, 1e-15);
+  EXPECT_NEAR(two[1], -1.0 / 3, 1e-15);
+  EXPECT_NEAR(two[2], 2.0 / 3, 1e-15);
+}
+
 TEST(LeastSquares, ConjugateGradientsOnAllCoresAreTheOneThreadIterations) {
   // The iterations run in chunks of the unknowns whose number depends on the problem alone:
   // on all cores they give the one-thread control values bit for bit, in the same number of

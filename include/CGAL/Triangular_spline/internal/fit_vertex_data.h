@@ -651,7 +651,9 @@ Fit_statistics fit_vertex_data(C1_quintic_spline<GeomTraits, Value>& spline,
       spline.set_free_value(s, ties.size() == 1 ? v : Value((FT(1) / FT(int(ties.size()))) * v));
     }
   } else if (fit == Fit::LEAST_SQUARES) {
-    solved = internal::least_squares_free_values(spline, values, target, given_star, options);
+    // (the local polynomials, 168 bytes per vertex, go once every slot's target is read)
+    solved = internal::least_squares_free_values(spline, values, target, given_star, options,
+                                                 [&] { local.reset(); });
   } else if (!streamed) {
     internal::parallel_for_index(
         spline.number_of_slots(), threads,

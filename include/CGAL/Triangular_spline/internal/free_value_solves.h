@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -56,7 +57,8 @@ struct Affine_slots {
   static constexpr int D = Value_traits<Value>::dimension;
   static constexpr std::uint32_t no_row = std::numeric_limits<std::uint32_t>::max();
   std::size_t unknowns = 0;
-  // Slot s's entries are row_begin[row_of(s)] .. + row_size[row_of(s)].
+  // Slot s's entries are row_begin[row_of(s)] .. + row_size[row_of(s)]. affine_slots() makes
+  // rows 0 .. unknowns - 1 the unknowns' own rows (row j: the single entry 1 x_j), in order.
   std::vector<std::size_t> row_begin;
   std::vector<std::uint32_t> row_size;
   std::vector<int> unknown;
@@ -607,6 +609,56 @@ Schwarz_statistics minimise_slot_quadratic(
   return statistics;
 }
 
+// Replaces the symmetric positive definite k x k matrix A (packed lower triangle, A(i, j) at
+// i (i + 1) / 2 + j for j <= i) by its inverse: A = L L^T (Cholesky), then A^-1 = L^-T L^-1
+// in `scratch`. (Eigen's dynamic LLT and solve(I) took 0.14 CPU s for the 10^5 blocks of
+// about 11 unknowns of a least-squares fit at 10^5 points: allocations and blocking for
+// matrices this small.) The blocks of conjugate gradients' preconditioner are >= I.
+inline void invert_packed_positive_definite(double* A, std::size_t k,
+                                            std::vector<double>& scratch) {
+  auto at = [](std::size_t i, std::size_t j) { return i * (i + 1) / 2 + j; };
+  for (std::size_t i = 0; i < k; ++i) { // Cholesky, row by row
+    double* Li = A + at(i, 0);
+    for (std::size_t j = 0; j < i; ++j) {
+      const double* Lj = A + at(j, 0);
+      double t = Li[j];
+      for (std::size_t l = 0; l < j; ++l)
+        t -= Li[l] * Lj[l];
+      Li[j] = t / Lj[j];
+    }
+    double d = Li[i];
+    for (std::size_t l = 0; l < i; ++l)
+      d -= Li[l] * Li[l];
+    CGAL_assertion(d > 0);
+    Li[i] = std::sqrt(d);
+  }
+  // L^-1 in place, row by row (row i reads L's row i from column j on and the rows above,
+  // already inverted)
+  for (std::size_t i = 0; i < k; ++i) {
+    double* Li = A + at(i, 0);
+    const double inverse = 1 / Li[i];
+    for (std::size_t j = 0; j < i; ++j) {
+      double t = 0;
+      for (std::size_t l = j; l < i; ++l)
+        t += Li[l] * A[at(l, j)];
+      Li[j] = -t * inverse;
+    }
+    Li[i] = inverse;
+  }
+  // A^-1 (i, j) = sum over l >= i of L^-1 (l, i) L^-1 (l, j), for j <= i
+  scratch.assign(k * (k + 1) / 2, 0.0);
+  for (std::size_t l = 0; l < k; ++l) {
+    const double* row = A + at(l, 0);
+    for (std::size_t i = 0; i <= l; ++i) {
+      double* out = scratch.data() + at(i, 0);
+      const double c = row[i];
+      for (std::size_t j = 0; j <= i; ++j)
+        out[j] += c * row[j];
+    }
+  }
+  std::copy(scratch.begin(), scratch.end(), A);
+}
+
 // The least-squares fit beyond options.direct_limit unknowns: the normal equations N x = b,
 // N = R^T R and b = R^T (t - c) over the control slots' rows r_s (Affine_slots) and targets
 // t_s, by conjugate gradients preconditioned with the inverses of N's diagonal blocks of
@@ -623,7 +675,8 @@ Schwarz_statistics minimise_slot_quadratic(
 template <class GeomTraits, class Value, class Target>
 Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTraits, Value>& spline,
                                                      Affine_slots<Value> a, const Target& target,
-                                                     const Schwarz_options& options, double scale) {
+                                                     const Schwarz_options& options, double scale,
+                                                     const std::function<void()>& targets_read) {
   using FT = typename GeomTraits::FT;
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   using Traits = Value_traits<Value>;
@@ -639,13 +692,22 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
   // block is a range, and rows read nearby memory.
   std::vector<Slot> slot_of(n);
   std::vector<std::uint32_t> owner(n);
-  for (Slot s : spline.free_slots()) {
-    const int j = a.column(s);
-    if (j < 0)
-      continue;
-    CGAL_assertion(std::size_t(s) < spline.number_of_slots()); // its row is in R: N >= I
-    slot_of[std::size_t(j)] = s;
-    owner[std::size_t(j)] = owning_vertex(spline, s);
+  {
+    const std::size_t all = spline.values().size(); // (control points and auxiliary slots)
+    parallel_for_index(
+        all, thread_count(all, 50000),
+        [&](std::size_t i) {
+          const Slot s = static_cast<Slot>(i);
+          if (!spline.is_free(s))
+            return;
+          const int j = a.column(s);
+          if (j < 0)
+            return;
+          CGAL_assertion(std::size_t(s) < spline.number_of_slots()); // its row is in R: N >= I
+          slot_of[std::size_t(j)] = s;
+          owner[std::size_t(j)] = owning_vertex(spline, s);
+        },
+        parallel_block);
   }
   std::vector<std::size_t> start(V + 1, 0);
   for (std::uint32_t v : owner)
@@ -666,7 +728,8 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
   std::vector<std::array<double, D>> own(n);
   const std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   std::vector<std::uint32_t> kept_as(a.row_size.size(), none); // S's row of a's row r
-  auto is_own = [&](std::size_t s) { return slot_of[std::size_t(a.column(s))] == s; };
+  // (affine_slots() lists the unknowns' own rows first: row j is unknown j's)
+  auto is_own = [&](std::size_t s) { return a.row_of(s) < n; };
   std::size_t rows = 0;
   for (std::size_t s = 0; s < spline.number_of_slots(); ++s)
     if (a.has_row(s) && !is_own(s))
@@ -684,12 +747,13 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
         if (!a.has_row(s))
           return;
         const Value t = target(static_cast<Slot>(s));
-        std::array<double, D>& r =
-            is_own(s) ? own[position[std::size_t(a.column(s))]] : y[kept_as[a.row_of(s)]];
+        std::array<double, D>& r = is_own(s) ? own[position[a.row_of(s)]] : y[kept_as[a.row_of(s)]];
         for (int d = 0; d < D; ++d)
           r[std::size_t(d)] = CGAL::to_double(Traits::coordinate(t, d)) - a.constant(s, d);
       },
       exact ? 16 : parallel_block);
+  if (targets_read) // what computes them (the local polynomials) can go before the solve
+    targets_read();
   std::vector<std::size_t> row_start(rows + 1, 0);
   std::vector<int> column = std::move(a.unknown);
   std::vector<double> weight = std::move(a.weight);
@@ -780,11 +844,14 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
     for (std::size_t i = start[v]; i < start[v + 1]; ++i)
       vertex_of[i] = std::uint32_t(v);
   }
-  std::vector<double> block(block_at[V], 0.0);
-  for (std::uint32_t v = 0; v < V; ++v)
-    for (std::size_t i = 0; i < start[v + 1] - start[v]; ++i)
-      block[block_at[v] + i * (i + 1) / 2 + i] = 1;
+  // (each chunk sets up its own blocks: their pages are touched on all cores)
+  std::unique_ptr<double[]> block(new double[block_at[V]]);
   for_each_chunk([&](std::size_t k) {
+    for (std::uint32_t v = chunk_vertex[k]; v < chunk_vertex[k + 1]; ++v) {
+      std::fill(block.get() + block_at[v], block.get() + block_at[v + 1], 0.0);
+      for (std::size_t i = 0; i < start[v + 1] - start[v]; ++i)
+        block[block_at[v] + i * (i + 1) / 2 + i] = 1;
+    }
     const std::size_t lo = chunk_unknown[k], hi = chunk_unknown[k + 1];
     for (std::size_t c = chunk_row_start[k]; c < chunk_row_start[k + 1]; ++c) {
       const std::size_t r = chunk_rows[c];
@@ -793,7 +860,7 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
         if (j < lo || j >= hi)
           continue;
         const std::uint32_t v = vertex_of[j];
-        double* L = block.data() + block_at[v];
+        double* L = block.get() + block_at[v];
         const std::size_t i = j - start[v];
         for (std::size_t q = p + 1; q-- > row_start[r] && vertex_of[column[q]] == v;)
           L[i * (i + 1) / 2 + (column[q] - start[v])] += weight[p] * weight[q];
@@ -803,27 +870,15 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
   release(vertex_of);
   // each block replaced by its inverse (packed lower triangle)
   for_each_chunk([&](std::size_t chunk) {
-    Eigen::MatrixXd B;
-    for (std::uint32_t v = chunk_vertex[chunk]; v < chunk_vertex[chunk + 1]; ++v) {
-      double* L = block.data() + block_at[v];
-      const auto k = Eigen::Index(start[v + 1] - start[v]);
-      B.resize(k, k);
-      for (Eigen::Index i = 0; i < k; ++i)
-        for (Eigen::Index j = 0; j <= i; ++j)
-          B(i, j) = B(j, i) = L[i * (i + 1) / 2 + j];
-      Eigen::LLT<Eigen::MatrixXd> llt(B);
-      CGAL_assertion(llt.info() == Eigen::Success); // a diagonal block of N >= I
-      B = llt.solve(Eigen::MatrixXd::Identity(k, k));
-      for (Eigen::Index i = 0; i < k; ++i)
-        for (Eigen::Index j = 0; j <= i; ++j)
-          L[i * (i + 1) / 2 + j] = (B(i, j) + B(j, i)) / 2;
-    }
+    std::vector<double> scratch;
+    for (std::uint32_t v = chunk_vertex[chunk]; v < chunk_vertex[chunk + 1]; ++v)
+      invert_packed_positive_definite(block.get() + block_at[v], start[v + 1] - start[v], scratch);
   });
   // z = (block diagonal of N)^-1 r on chunk k's unknowns; returns their r.z
   auto precondition = [&](std::size_t chunk, const double* r, double* z) {
     double rz = 0;
     for (std::uint32_t v = chunk_vertex[chunk]; v < chunk_vertex[chunk + 1]; ++v) {
-      const double* L = block.data() + block_at[v];
+      const double* L = block.get() + block_at[v];
       const std::size_t o = start[v], k = start[v + 1] - o;
       const double* rv = r + o;
       double* zv = z + o;
@@ -892,10 +947,12 @@ Schwarz_statistics least_squares_conjugate_gradients(C1_quintic_spline<GeomTrait
   const double threshold = options.tolerance * scale;
   const int limit = (std::max)(0, options.max_iterations);
   // Not zeroed: every entry is written first by its chunk, so that the pages are touched on
-  // all cores (fresh pages cost up to 2 s per GB on the machines measured).
-  std::unique_ptr<double[]> vectors(new double[5 * n]);
+  // all cores (fresh pages cost up to 2 s per GB on the machines measured). z = M r and
+  // g = N p share their array: g is read only by the update that follows the product, z
+  // only until the direction p is formed from it, and each is written before it is read.
+  std::unique_ptr<double[]> vectors(new double[4 * n]);
   double *const x = vectors.get(), *const r = x + n, *const z = r + n, *const p = z + n,
-                *const g = p + n;
+                *const g = z;
   statistics.converged = true;
   for (std::size_t d = 0; d < std::size_t(D); ++d) {
     // from the unknowns' own targets
@@ -968,12 +1025,13 @@ template <class GeomTraits, class Value, class Target, class Fixed>
 Schwarz_statistics least_squares_free_values(C1_quintic_spline<GeomTraits, Value>& spline,
                                              const std::vector<Value>& values, const Target& target,
                                              const Fixed& fixed,
-                                             const Schwarz_options& options = {}) {
+                                             const Schwarz_options& options = {},
+                                             const std::function<void()>& targets_read = {}) {
   using Slot = typename C1_quintic_spline<GeomTraits, Value>::Slot;
   auto a = affine_slots(spline, values, true, fixed);
   if (a.unknowns > options.direct_limit)
     return least_squares_conjugate_gradients(spline, std::move(a), target, options,
-                                             data_scale(values));
+                                             data_scale(values), targets_read);
   std::vector<std::pair<std::uint32_t, Value>> misfits;
   misfits.reserve(spline.number_of_slots());
   for (std::size_t s = 0; s < spline.number_of_slots(); ++s)
