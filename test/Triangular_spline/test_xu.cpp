@@ -336,29 +336,42 @@ TEST(Spline, DoublePlanStoresFewRulesAndPropagatesInPlanOrder) {
     EXPECT_EQ(visited, R);
     // the weights by kind, kept by the plan, are those of the rules
     expect_weight_statistics_of_rules(spline, rules);
-    // the amplification estimate (rules in runs on all cores, with the plan, in the values'
-    // storage) is the serial one's, and the values are left at zero
+    // the amplification estimate (rules in runs on all cores, in float, signs hashed from the
+    // slots) is the serial one's: asked before any propagation, and as the first
+    // propagate() computes it beside the values (the weights computed once for both)
     {
-      std::vector<double> x(spline.values().size(), 0.0);
-      EXPECT_EQ(spline.values(), x);
-      std::mt19937 signs(1);
+      EXPECT_EQ(spline.values(), std::vector<double>(spline.values().size(), 0.0));
+      std::vector<float> x(spline.values().size(), 0.0f);
       for (const Spline::Slot s : spline.free_slots()) {
         const TS::Slot_kind k = spline.kind(s);
-        if (k != TS::Slot_kind::CORNER && k != TS::Slot_kind::STAR)
-          x[s] = (signs() & 1) ? 1.0 : -1.0;
+        if (k == TS::Slot_kind::CORNER || k == TS::Slot_kind::STAR)
+          continue;
+        std::uint64_t z = std::uint64_t(s) + 0x9e3779b97f4a7c15u; // splitmix64's finaliser
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+        x[s] = ((z ^ (z >> 31)) >> 63) ? 1.0f : -1.0f;
       }
+      // the signs are balanced (a hash, not a constant)
+      const auto plus = std::count(x.begin(), x.end(), 1.0f),
+                 minus = std::count(x.begin(), x.end(), -1.0f);
+      EXPECT_GT(plus, minus / 2);
+      EXPECT_GT(minus, plus / 2);
       double amplification = 0;
       for (const Spline::Rule& r : rules) {
         double v = 0;
         for (int i = 0; i < r.size(); ++i)
           v += r.weights[std::size_t(i)] * x[r.sources[std::size_t(i)]];
-        x[r.target] = v;
+        x[r.target] = static_cast<float>(v);
         amplification = (std::max)(amplification, std::abs(v));
       }
       for (const Spline::Slot s : spline.free_slots())
-        amplification = (std::max)(amplification, std::abs(x[s]));
+        amplification = (std::max)(amplification, double(std::abs(x[s])));
       EXPECT_GT(amplification, 1.0);
       EXPECT_EQ(spline.propagation_amplification(), amplification);
+      Spline propagated = spline;
+      propagated.propagate(); // (every free value zero: so is every control value)
+      EXPECT_EQ(propagated.values(), spline.values());
+      EXPECT_EQ(propagated.propagation_amplification(), amplification);
     }
     for (Spline::Slot s : spline.free_slots())
       spline.set_free_value(s, uniform(random));
@@ -3675,6 +3688,11 @@ TEST(Plan, FaceMeasuresAreThePatchsBits) {
       EXPECT_EQ(measures->second,
                 patch.evaluate(CGAL::centroid(patch.vertex(0), patch.vertex(1), patch.vertex(2))))
           << f;
+      // without the energy (tspline c1 without a report): the same value, energy zero
+      const auto value_only = TS::internal::face_energy_and_centroid_value(spline, f, false);
+      ASSERT_TRUE(value_only.has_value()) << f;
+      EXPECT_EQ(value_only->first, 0.0) << f;
+      EXPECT_EQ(value_only->second, measures->second) << f;
     }
   }
   EXPECT_GT(faces, 38000u);

@@ -32,11 +32,12 @@
 #include <functional>
 #include <type_traits>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <thread>
 #include <utility>
-#include <random>
 #include <vector>
 
 namespace CGAL {
@@ -486,10 +487,11 @@ public:
   }
   /// returns an estimate of how much the propagation amplifies inconsistent prescribed
   /// points: the largest absolute control value when every corner region is zero and every
-  /// other free point is an independent random sign (fixed seed; one pass over the rules).
-  /// With `double` values it is computed with the plan, in the control values' storage
-  /// before they are set (a copy would be the largest allocation of a `tspline c1` run: 200
-  /// MB at \f$10^6\f$ points); other value types compute it in `float` on a copy. A single
+  /// other free point is an independent sign (a fixed hash of its slot; one pass over the
+  /// rules, in `float`). With `double` values the first `propagate()` of the plan computes it
+  /// beside the control values, sharing their rules' weights (a pass of its own was about 6% of a
+  /// `tspline c1` run at \f$10^6\f$ points); before that, and with other value types, it is
+  /// computed here (the same value: the same operations in the same order). A single
   /// weight need not amplify: weights that combine points whose deviations cancel do not
   /// (the closing link of a vertex 1e-8 degrees from singular, solved alone, had weights of
   /// 1e10 and this estimate 4). Corner regions are
@@ -498,12 +500,11 @@ public:
   /// estimate stays below about twice the bound (a rule's weights sum to one).
   /// \returns the estimated amplification (0 if no point outside the corner regions is free)
   double propagation_amplification() const {
-    if constexpr (std::is_same_v<Value, double>) {
-      return m_amplification;
-    } else {
-      std::vector<float> x(m_values.size(), 0.0f); // float: an estimate, half the memory
-      return amplification_in(x);
-    }
+    if (m_amplification)
+      return *m_amplification;
+    // float: an estimate, half the memory; not initialised: amplification_signs() fills it
+    const std::unique_ptr<float[]> x(new float[m_free.size()]);
+    return amplification_in(x.get());
   }
   /// returns how often the plan was built: 1, plus one rebuild per round of dependency
   /// cycles broken (a thin re-routing makes corner-inner points at one end depend on those
@@ -568,6 +569,7 @@ public:
         throw Invalid_input("map_domain: triangle " + std::to_string(f) +
                             " differs (vertices or orientation) in the image");
     m_domain = std::move(image);
+    m_amplification.reset(); // (the implicit rules' weights follow the points)
   }
 
   /// computes every dependent slot from the free ones, in plan order (with an exact number
@@ -583,8 +585,21 @@ public:
       for (const std::uint32_t ref : m_rule_refs)
         apply_ref(ref);
     } else {
-      double unused = 0;
-      for_each_rule_in_runs([&](const Rule& r, double&) { apply(r); }, unused);
+      double largest = 0;
+      if (std::is_same_v<Value, double> && !m_amplification) {
+        // propagation_amplification() on the way: the weights are computed once for both
+        const std::unique_ptr<float[]> x(new float[m_free.size()]);
+        const bool signs = amplification_signs(x.get());
+        for_each_rule_in_runs(
+            [&](const Rule& r, double& block_largest) {
+              apply(r);
+              amplification_step(r, x.get(), block_largest);
+            },
+            largest);
+        m_amplification = signs ? (std::max)(largest, 1.0) : largest;
+        return;
+      }
+      for_each_rule_in_runs([&](const Rule& r, double&) { apply(r); }, largest);
     }
   }
 
@@ -992,16 +1007,52 @@ private:
     merge_weights(blocks);
   }
 
-  // propagation_amplification() with x (zero, one entry per slot) as the values.
+  // Sets x[s] (one entry per slot) to an independent sign at the free slots outside the
+  // corner regions, to zero elsewhere; returns whether any slot has a sign. A sign is a bit
+  // of a hash of s (splitmix64's finaliser), which any core computes: the first touch of x
+  // (100 MB at 10^6 points) and a serial random sequence had taken 0.25 s on one core.
   template <class Number>
-  double amplification_in(std::vector<Number>& x) const {
-    std::mt19937 random(1);
-    for (Slot s : free_slots()) {
-      const Slot_kind k = kind(s);
-      if (k != Slot_kind::CORNER && k != Slot_kind::STAR)
-        x[s] = (random() & 1) ? Number(1) : Number(-1);
-    }
-    double largest = 0;
+  bool amplification_signs(Number* x) const {
+    const std::size_t n = m_free.size();
+    constexpr std::size_t block = std::size_t(1) << 16;
+    std::atomic<bool> any{false};
+    internal::parallel_for_index((n + block - 1) / block, internal::thread_count(n, 1000000),
+                                 [&](std::size_t b) {
+                                   bool signs = false;
+                                   for (std::size_t s = b * block;
+                                        s < (std::min)(n, (b + 1) * block); ++s) {
+                                     Number v(0);
+                                     if (m_free[s]) {
+                                       const Slot_kind k = kind(Slot(s));
+                                       if (k != Slot_kind::CORNER && k != Slot_kind::STAR) {
+                                         std::uint64_t z = std::uint64_t(s) + 0x9e3779b97f4a7c15u;
+                                         z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+                                         z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+                                         v = ((z ^ (z >> 31)) >> 63) ? Number(1) : Number(-1);
+                                         signs = true;
+                                       }
+                                     }
+                                     x[s] = v;
+                                   }
+                                   if (signs)
+                                     any.store(true, std::memory_order_relaxed);
+                                 },
+                                 1);
+    return any.load();
+  }
+  template <class Number>
+  static void amplification_step(const Rule& r, Number* x, double& largest) {
+    double v = 0;
+    for (int i = 0; i < r.size(); ++i)
+      v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
+    x[r.target] = static_cast<Number>(v);
+    largest = (std::max)(largest, std::abs(v));
+  }
+  // propagation_amplification() with x (one entry per slot, any content) as the values. A
+  // free slot keeps its sign (no rule targets it): they count as 1 in the largest value.
+  template <class Number>
+  double amplification_in(Number* x) const {
+    double largest = amplification_signs(x) ? 1.0 : 0.0;
     // Stored rules (exact plans: every rule) depth by depth on all cores: converting their
     // weights to double is most of the work. Each rule computes what it would in plan order,
     // and the largest is a maximum.
@@ -1018,35 +1069,20 @@ private:
         internal::parallel_for_index(
             block_largest.size(), threads,
             [&](std::size_t b) {
-              for (std::size_t k = b * block; k < (std::min)(count, (b + 1) * block); ++k) {
-                const Rule& r =
-                    m_explicit_rules[m_rule_refs[order[first + k]] & ~explicit_rule_bit];
-                double v = 0;
-                for (int i = 0; i < r.size(); ++i)
-                  v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
-                x[r.target] = static_cast<Number>(v);
-                block_largest[b] = (std::max)(block_largest[b], std::abs(v));
-              }
+              for (std::size_t k = b * block; k < (std::min)(count, (b + 1) * block); ++k)
+                amplification_step(
+                    m_explicit_rules[m_rule_refs[order[first + k]] & ~explicit_rule_bit], x,
+                    block_largest[b]);
             },
             1);
         for (double m : block_largest)
           largest = (std::max)(largest, m);
       }
-      for (Slot s : free_slots())
-        largest = (std::max)(largest, double(std::abs(x[s])));
       return largest;
     }
     for_each_rule_in_runs(
-        [&](const Rule& r, double& block_largest) {
-          double v = 0;
-          for (int i = 0; i < r.size(); ++i)
-            v += CGAL::to_double(r.weights[std::size_t(i)]) * x[r.sources[std::size_t(i)]];
-          x[r.target] = static_cast<Number>(v);
-          block_largest = (std::max)(block_largest, std::abs(v));
-        },
+        [&](const Rule& r, double& block_largest) { amplification_step(r, x, block_largest); },
         largest);
-    for (Slot s : free_slots())
-      largest = (std::max)(largest, double(std::abs(x[s])));
     return largest;
   }
 
@@ -1613,10 +1649,7 @@ private:
 #endif
     if (!assigned)
       m_values.assign(m_free.size(), zero());
-    if constexpr (std::is_same_v<Value, double>) {
-      m_amplification = amplification_in(m_values);
-      std::fill(m_values.begin(), m_values.end(), zero());
-    }
+    m_amplification.reset(); // (the first propagate() of doubles computes it)
     m_number_of_free = m_free.size() - std::size_t(std::count(m_free.begin(), m_free.end(), 0));
   }
 
@@ -2658,8 +2691,8 @@ private:
   Degenerate_frame_analysis<Index> m_degenerate;
   std::vector<Degenerate_frame> m_frames;
   double m_max_weight = 0;
-  double m_amplification = 0;                   // propagation_amplification() of a plan of doubles
-  std::array<double, 6> m_max_weight_by_kind{}; // by Slot_kind of the target
+  std::optional<double> m_amplification;              // propagation_amplification(), once known
+  std::array<double, 6> m_max_weight_by_kind{};       // by Slot_kind of the target
   std::array<std::size_t, 6> m_above_bound_by_kind{}; // rules above the bound, by kind
   int m_plan_rounds = 0; // plan builds: 1 + the rebuilds that broke dependency cycles
   std::vector<Index> m_near_singular;

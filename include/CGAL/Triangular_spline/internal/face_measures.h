@@ -24,11 +24,12 @@ namespace internal {
 // (r, s, u), and its value at the triangle's centroid, by the operations of the patch (its
 // constructor's checks, Bezier_triangle::barycentric_coordinates(), its de Casteljau steps),
 // hence the same bits; empty where the patch's constructor would throw. `net` is overwritten.
+// Without `with_energy` the energy is zero (most of the work is the energy's).
 template <class K, class Net>
 std::optional<std::pair<typename K::FT, typename K::FT>>
 energy_and_centroid_value_of_net(const K& traits, const typename K::Point_2& r,
                                  const typename K::Point_2& s, const typename K::Point_2& u,
-                                 Net& net) {
+                                 Net& net, bool with_energy = true) {
   using FT = typename K::FT;
   for (const auto* p : {&r, &s, &u})
     if (!CGAL::is_finite(p->x()) || !CGAL::is_finite(p->y()))
@@ -44,9 +45,12 @@ energy_and_centroid_value_of_net(const K& traits, const typename K::Point_2& r,
     return std::nullopt;
   const FT inverse_area2 = FT(1) / area2;
   const FT energy =
-      thin_plate_energy_of_net<FT>(5, r, s, u, [&](std::size_t, const Multi_index& a) -> const FT& {
-        return net[linear_index(a)];
-      });
+      with_energy
+          ? thin_plate_energy_of_net<FT>(5, r, s, u,
+                                         [&](std::size_t, const Multi_index& a) -> const FT& {
+                                           return net[linear_index(a)];
+                                         })
+          : FT(0);
   const auto c = CGAL::centroid(r, s, u);
   const FT mu = determinant(c - r, u - r) * inverse_area2;
   const FT nu = determinant(s - r, c - r) * inverse_area2;
@@ -61,16 +65,18 @@ energy_and_centroid_value_of_net(const K& traits, const typename K::Point_2& r,
 // on the face's net without building the patch: the same bits (test
 // Plan.FaceMeasuresAreThePatchsBits). Empty where the patch's constructor would throw.
 // tspline c1 takes both for every face; the patch's heap net and checks were most of that.
+// Without `with_energy` the energy is zero.
 template <class GeomTraits>
 std::optional<std::pair<typename GeomTraits::FT, typename GeomTraits::FT>>
 face_energy_and_centroid_value(const C1_quintic_spline<GeomTraits>& spline,
-                               typename C1_quintic_spline<GeomTraits>::Index f) {
+                               typename C1_quintic_spline<GeomTraits>::Index f,
+                               bool with_energy = true) {
   const auto& domain = spline.domain();
   const auto& t = domain.face(f);
   Scratch_net<typename GeomTraits::FT> net;
   spline.face_net(f, net); // the patch's order
   return energy_and_centroid_value_of_net(domain.geom_traits(), domain.point(t[0]),
-                                          domain.point(t[1]), domain.point(t[2]), net);
+                                          domain.point(t[1]), domain.point(t[2]), net, with_energy);
 }
 
 // The same measures of convert_patch<Target>(spline.patch(f)), the patch converted to the
@@ -80,7 +86,8 @@ face_energy_and_centroid_value(const C1_quintic_spline<GeomTraits>& spline,
 template <class Target, class GeomTraits>
 std::optional<std::pair<typename Target::FT, typename Target::FT>>
 converted_face_energy_and_centroid_value(const C1_quintic_spline<GeomTraits>& spline,
-                                         typename C1_quintic_spline<GeomTraits>::Index f) {
+                                         typename C1_quintic_spline<GeomTraits>::Index f,
+                                         bool with_energy = true) {
   const CGAL::Cartesian_converter<GeomTraits, Target> convert;
   const auto& domain = spline.domain();
   const auto& t = domain.face(f);
@@ -94,7 +101,7 @@ converted_face_energy_and_centroid_value(const C1_quintic_spline<GeomTraits>& sp
   }
   return energy_and_centroid_value_of_net(Target(), convert(domain.point(t[0])),
                                           convert(domain.point(t[1])), convert(domain.point(t[2])),
-                                          net);
+                                          net, with_energy);
 }
 
 } // namespace internal
