@@ -1009,36 +1009,34 @@ private:
 
   // Sets x[s] (one entry per slot) to an independent sign at the free slots outside the
   // corner regions, to zero elsewhere; returns whether any slot has a sign. A sign is a bit
-  // of a hash of s (splitmix64's finaliser), which any core computes: the first touch of x
-  // (100 MB at 10^6 points) and a serial random sequence had taken 0.25 s on one core.
+  // of a hash of s, which any core computes: the first touch of x (100 MB at 10^6 points)
+  // and a serial random sequence had taken 0.25 s on one core.
   template <class Number>
   bool amplification_signs(Number* x) const {
     const std::size_t n = m_free.size();
     constexpr std::size_t block = std::size_t(1) << 16;
     std::atomic<bool> any{false};
-    internal::parallel_for_index((n + block - 1) / block, internal::thread_count(n, 1000000),
-                                 [&](std::size_t b) {
-                                   bool signs = false;
-                                   for (std::size_t s = b * block;
-                                        s < (std::min)(n, (b + 1) * block); ++s) {
-                                     Number v(0);
-                                     if (m_free[s]) {
-                                       const Slot_kind k = kind(Slot(s));
-                                       if (k != Slot_kind::CORNER && k != Slot_kind::STAR) {
-                                         std::uint64_t z = std::uint64_t(s) + 0x9e3779b97f4a7c15u;
-                                         z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
-                                         z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
-                                         v = ((z ^ (z >> 31)) >> 63) ? Number(1) : Number(-1);
-                                         signs = true;
-                                       }
-                                     }
-                                     x[s] = v;
-                                   }
-                                   if (signs)
-                                     any.store(true, std::memory_order_relaxed);
-                                 },
+    auto fill = [&](std::size_t b) {
+      bool signs = false;
+      for (std::size_t s = b * block; s < (std::min)(n, (b + 1) * block); ++s) {
+        const Slot_kind k = kind(Slot(s));
+        const bool sign = m_free[s] && k != Slot_kind::CORNER && k != Slot_kind::STAR;
+        x[s] = sign ? (positive_sign(s) ? Number(1) : Number(-1)) : Number(0);
+        signs = signs || sign;
+      }
+      if (signs)
+        any.store(true, std::memory_order_relaxed);
+    };
+    internal::parallel_for_index((n + block - 1) / block, internal::thread_count(n, 1000000), fill,
                                  1);
     return any.load();
+  }
+  // the top bit of splitmix64's finaliser of s
+  static bool positive_sign(std::size_t s) {
+    std::uint64_t z = std::uint64_t(s) + 0x9e3779b97f4a7c15u;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return ((z ^ (z >> 31)) >> 63) != 0;
   }
   template <class Number>
   static void amplification_step(const Rule& r, Number* x, double& largest) {
